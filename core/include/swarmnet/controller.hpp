@@ -1,0 +1,71 @@
+// Controller plugins: a robot's behaviour. One instance per robot per controller entry; on each
+// step a robot's controllers run in the scenario's order.
+//
+// A controller sees only its RobotContext: its own sensors and actuators, never the world.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "swarmnet/ids.hpp"
+#include "swarmnet/plugin.hpp"
+#include "swarmnet/units.hpp"
+#include "swarmnet/vector.hpp"
+
+namespace swarmnet {
+
+// A message the network delivered to this robot.
+struct ReceivedMessage {
+  std::uint64_t message_id = 0;
+  RobotId source = kNoNode;
+  RobotId destination = kNoNode;  // this robot, or kBroadcast
+  SimTime sent_at{};              // when the network took it in
+  SimTime delivered_at{};
+  std::uint32_t hops = 0;
+  std::vector<std::byte> payload;
+};
+
+class RobotContext {
+ public:
+  // Sensors.
+  [[nodiscard]] virtual RobotId id() const = 0;
+  [[nodiscard]] virtual std::size_t robot_count() const = 0;
+  [[nodiscard]] virtual SimTime now() const = 0;
+  [[nodiscard]] virtual double step_s() const = 0;
+  [[nodiscard]] virtual Vec2 position() const = 0;
+  [[nodiscard]] virtual double heading_rad() const = 0;
+  [[nodiscard]] virtual double max_speed_mps() const = 0;
+  // Proximity ring: distances in metres, ray k at heading + 2*pi*k/size(); range when clear.
+  [[nodiscard]] virtual std::span<const double> proximity() const = 0;
+  [[nodiscard]] virtual double proximity_range_m() const = 0;
+  // Messages delivered to this robot since its previous step, in delivery order.
+  [[nodiscard]] virtual std::span<const ReceivedMessage> inbox() const = 0;
+
+  // Actuators. Wheel speeds are clamped to +/- max_speed_mps().
+  virtual void set_wheel_speeds(double left_mps, double right_mps) = 0;
+  // Sends a message to one robot, or to kBroadcast. Returns its message id. A payload larger than
+  // kMaxPayloadBytes is refused with std::invalid_argument.
+  virtual std::uint64_t send(RobotId destination, std::span<const std::byte> payload) = 0;
+
+  // Adds one observation of a named metric; summary.json reports count, sum, mean, min and max.
+  virtual void record(std::string_view metric, double value) = 0;
+
+ protected:
+  ~RobotContext() = default;
+};
+
+class Controller : public Plugin {
+ public:
+  static constexpr PluginKind kKind = PluginKind::controller;
+
+  // Called once before the first step.
+  virtual void init(RobotContext& /*robot*/) {}
+  virtual void control_step(RobotContext& robot) = 0;
+  // Returns to the state right after init().
+  virtual void reset() {}
+};
+
+}  // namespace swarmnet

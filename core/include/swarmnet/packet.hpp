@@ -1,0 +1,82 @@
+// What travels through the network half: packets (network layer) inside frames (MAC layer).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "swarmnet/ids.hpp"
+#include "swarmnet/units.hpp"
+
+namespace swarmnet {
+
+// Bytes every packet carries below routing: an IPv4 (20) and a UDP (8) header, as in ns-3's
+// application traffic and AODV control packets, so that frame sizes and airtimes match.
+inline constexpr std::uint32_t kNetworkHeaderBytes = 28;
+
+inline constexpr std::uint64_t kNoMessage = std::numeric_limits<std::uint64_t>::max();
+
+using Payload = std::vector<std::byte>;
+
+struct Packet {
+  std::uint64_t uid = 0;          // unique in a run; copies made by forwarding keep it
+  NodeId source = kNoNode;        // originator
+  NodeId destination = kBroadcast;
+  std::uint64_t message_id = kNoMessage;  // the application message carried; kNoMessage: control
+  SimTime sent_at{};              // when the originator's application handed it down
+  std::uint32_t hops = 0;         // links traversed so far; the kernel counts them on reception
+  std::vector<std::uint8_t> header;  // the routing protocol's own header, serialised by it
+  std::shared_ptr<const Payload> payload;  // application bytes (null for control packets)
+
+  [[nodiscard]] bool is_control() const { return message_id == kNoMessage; }
+  [[nodiscard]] std::uint32_t payload_bytes() const {
+    return payload ? static_cast<std::uint32_t>(payload->size()) : 0U;
+  }
+  [[nodiscard]] std::uint32_t size_bytes() const {
+    return kNetworkHeaderBytes + static_cast<std::uint32_t>(header.size()) + payload_bytes();
+  }
+};
+
+enum class FrameType : std::uint8_t { data, ack, rts, cts };
+
+struct Frame {
+  FrameType type = FrameType::data;
+  NodeId transmitter = kNoNode;
+  NodeId receiver = kBroadcast;    // next hop, or kBroadcast
+  std::uint32_t header_bytes = 0;  // MAC header and FCS
+  double bitrate_bps = 0.0;        // rate of the payload part, for the PHY's error model
+  std::uint16_t sequence = 0;
+  bool retry = false;
+  SimTime nav{};                   // duration field (virtual carrier sense), 0 if unused
+  std::uint64_t uid = 0;           // unique per transmission; assigned by the kernel
+  std::optional<Packet> packet;    // the MSDU, for data frames
+
+  [[nodiscard]] std::uint32_t size_bytes() const {
+    return header_bytes + (packet ? packet->size_bytes() : 0U);
+  }
+};
+
+// Why a node discarded a packet. Every drop is traced and counted in summary.json.
+enum class DropReason : std::uint8_t {
+  no_route,        // routing has no route and will not find one
+  queue_full,      // an interface or routing buffer was full
+  ttl_expired,     // hop limit reached
+  retry_limit,     // the MAC gave up after its retries
+  buffer_timeout,  // waited too long for a route
+};
+
+inline const char* to_string(DropReason reason) {
+  switch (reason) {
+    case DropReason::no_route: return "no_route";
+    case DropReason::queue_full: return "queue_full";
+    case DropReason::ttl_expired: return "ttl_expired";
+    case DropReason::retry_limit: return "retry_limit";
+    case DropReason::buffer_timeout: return "buffer_timeout";
+  }
+  return "?";
+}
+
+}  // namespace swarmnet

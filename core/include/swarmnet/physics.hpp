@@ -1,0 +1,33 @@
+// Physics plugins: advance robot bodies by one step and answer proximity queries.
+#pragma once
+
+#include <cstddef>
+#include <span>
+
+#include "swarmnet/arena.hpp"
+#include "swarmnet/plugin.hpp"
+#include "swarmnet/robot_body.hpp"
+
+namespace swarmnet {
+
+class Physics : public Plugin {
+ public:
+  static constexpr PluginKind kKind = PluginKind::physics;
+
+  // Called once, before the first step, with the bodies at their initial poses.
+  virtual void setup(const Arena& arena, std::span<const RobotBody> bodies) = 0;
+
+  // Moves every body by its wheel speeds for dt_s seconds and resolves collisions with walls,
+  // obstacles and other robots. After it returns no two bodies overlap and no body leaves the
+  // arena or enters an obstacle.
+  virtual void step(double dt_s, std::span<RobotBody> bodies) = 0;
+
+  // Proximity ring of `robot`: ray k points at heading + 2*pi*k/rays.size(); each entry receives
+  // the distance in metres from the body's surface to the nearest wall, obstacle or robot along
+  // that ray, or range_m when nothing is within range. Valid for the bodies as of the last
+  // setup() or step().
+  virtual void sense_proximity(std::span<const RobotBody> bodies, std::size_t robot,
+                               double range_m, std::span<double> rays) const = 0;
+};
+
+}  // namespace swarmnet

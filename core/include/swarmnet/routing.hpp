@@ -1,0 +1,42 @@
+// Routing plugins: one instance per node, between the application above and the MAC below.
+#pragma once
+
+#include "swarmnet/node_context.hpp"
+#include "swarmnet/packet.hpp"
+#include "swarmnet/plugin.hpp"
+
+namespace swarmnet {
+
+class RoutingContext : public NodeContext {
+ public:
+  // A new control packet from this node, with a fresh uid, source = this node.
+  virtual Packet make_control_packet(NodeId destination) = 0;
+  // Hands `packet` to the MAC for `next_hop` (or kBroadcast). Call trace_forward() first when
+  // relaying another node's packet.
+  virtual void send_to_mac(Packet packet, NodeId next_hop) = 0;
+  // Gives a packet addressed to this node (or broadcast) to the local application.
+  virtual void deliver(const Packet& packet) = 0;
+  // Discards a packet (traced and counted).
+  virtual void drop(const Packet& packet, DropReason reason) = 0;
+  // Records that this node relays `packet` (packet trace "forward" event).
+  virtual void trace_forward(const Packet& packet) = 0;
+
+ protected:
+  ~RoutingContext() = default;
+};
+
+class Routing : public Plugin {
+ public:
+  static constexpr PluginKind kKind = PluginKind::routing;
+
+  // Called once before any traffic; the context outlives the plugin instance.
+  virtual void attach(RoutingContext& context) = 0;
+  // From the local application: originate `packet` (uid, source, destination, payload are set).
+  virtual void send(Packet packet) = 0;
+  // From the MAC: `packet` arrived from neighbour `from` (hops already counted).
+  virtual void receive(Packet packet, NodeId from) = 0;
+  // From the MAC: `next_hop` did not acknowledge `packet`.
+  virtual void link_failed(const Packet& /*packet*/, NodeId /*next_hop*/) {}
+};
+
+}  // namespace swarmnet

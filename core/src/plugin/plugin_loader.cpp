@@ -1,0 +1,116 @@
+#include "plugin/plugin_loader.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <set>
+#include <sstream>
+#include <system_error>
+
+namespace swarmnet {
+
+namespace {
+
+std::vector<std::filesystem::path> split_path_list(const char* list) {
+  std::vector<std::filesystem::path> dirs;
+  if (list == nullptr) return dirs;
+  std::stringstream stream(list);
+  std::string item;
+  while (std::getline(stream, item, ':')) {
+    if (!item.empty()) dirs.emplace_back(item);
+  }
+  return dirs;
+}
+
+constexpr std::string_view kFilePrefix = "swarmnet_";
+constexpr std::string_view kFileSuffix = ".so";
+
+}  // namespace
+
+std::string plugin_file_name(const std::string& name) {
+  return std::string(kFilePrefix) + name + std::string(kFileSuffix);
+}
+
+PluginLoader::PluginLoader(std::vector<std::filesystem::path> scenario_dirs)
+    : search_path_(std::move(scenario_dirs)) {
+  for (auto& dir : split_path_list(std::getenv("SWARMNET_PLUGIN_PATH"))) {
+    search_path_.push_back(std::move(dir));
+  }
+  search_path_.emplace_back(SWARMNET_BUILD_PLUGIN_DIR);
+  search_path_.emplace_back(SWARMNET_INSTALL_PLUGIN_DIR);
+}
+
+std::shared_ptr<PluginLibrary> PluginLoader::find(const std::string& name) {
+  if (auto it = cache_.find(name); it != cache_.end()) return it->second;
+  const std::string file = plugin_file_name(name);
+  std::ostringstream tried;
+  for (const auto& dir : search_path_) {
+    const auto candidate = dir / file;
+    std::error_code ec;
+    if (!std::filesystem::exists(candidate, ec)) {
+      tried << "\n  " << candidate.string() << ": no such file";
+      continue;
+    }
+    try {
+      auto library = PluginLibrary::open(candidate);
+      if (library->info().name != name) {
+        tried << "\n  " << candidate.string() << ": declares the name '" << library->info().name
+              << "'";
+        continue;
+      }
+      cache_.emplace(name, library);
+      return library;
+    } catch (const PluginError& error) {
+      // A broken candidate is reported, not skipped silently: finding a later one would hide it.
+      throw PluginError("plugin '" + name + "': " + error.what());
+    }
+  }
+  throw PluginError("plugin '" + name + "' not found; searched:" + tried.str() +
+                    "\n(add a directory with plugin_paths in the scenario or SWARMNET_PLUGIN_PATH)");
+}
+
+std::shared_ptr<PluginLibrary> PluginLoader::find(const std::string& name, PluginKind expected) {
+  auto library = find(name);
+  if (library->kind() != expected) {
+    throw PluginError("plugin '" + name + "' (" + library->path().string() + ") is a " +
+                      to_string(library->kind()) + " plugin; a " + to_string(expected) +
+                      " plugin is expected here");
+  }
+  return library;
+}
+
+std::vector<std::shared_ptr<PluginLibrary>> PluginLoader::discover(
+    std::vector<BrokenPlugin>* broken) {
+  std::set<std::string> seen;
+  std::vector<std::shared_ptr<PluginLibrary>> found;
+  for (const auto& dir : search_path_) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec)) continue;
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+      const std::string file = entry.path().filename().string();
+      if (file.starts_with(kFilePrefix) && file.ends_with(kFileSuffix)) files.push_back(entry.path());
+    }
+    std::sort(files.begin(), files.end());  // directory order is not deterministic
+    for (const auto& path : files) {
+      const std::string file = path.filename().string();
+      const std::string name = file.substr(kFilePrefix.size(),
+                                           file.size() - kFilePrefix.size() - kFileSuffix.size());
+      if (seen.contains(name)) continue;
+      seen.insert(name);
+      try {
+        auto library = PluginLibrary::open(path);
+        cache_.try_emplace(library->info().name, library);
+        found.push_back(std::move(library));
+      } catch (const PluginError& error) {
+        if (broken != nullptr) broken->push_back({path, error.what()});
+      }
+    }
+  }
+  std::stable_sort(found.begin(), found.end(), [](const auto& a, const auto& b) {
+    if (a->kind() != b->kind()) return a->kind() < b->kind();
+    return a->info().name < b->info().name;
+  });
+  return found;
+}
+
+}  // namespace swarmnet

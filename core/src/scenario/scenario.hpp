@@ -1,0 +1,94 @@
+// A validated scenario: everything a run needs, with defaults filled and plugins resolved.
+// Produced only by load_scenario() (scenario_loader.hpp); every field here has been checked.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "swarmnet/arena.hpp"
+#include "swarmnet/params.hpp"
+#include "swarmnet/plugin.hpp"
+#include "swarmnet/vector.hpp"
+
+namespace swarmnet {
+
+// Where a value came from, for error messages: "file.yaml:12:5" or "--set robots.count".
+struct SourceLocation {
+  std::string text;
+};
+
+// One plugin chosen in the scenario, with its validated parameters.
+struct PluginChoice {
+  std::string name;
+  PluginKind kind = PluginKind::controller;
+  ParamSet params;
+  SourceLocation where;
+};
+
+enum class SyncMode : std::uint8_t { strict, pipelined };
+
+struct ProximityConfig {
+  std::uint32_t rays = 24;
+  double range_m = 0.3;
+};
+
+struct RobotsConfig {
+  std::uint32_t count = 0;
+  double radius_m = 0.085;
+  double axle_m = 0.14;
+  double max_speed_mps = 1.0;
+  Rect placement;  // region robots start in (defaults to the whole arena)
+  ProximityConfig proximity;
+  std::vector<PluginChoice> controllers;  // run in this order on every step
+};
+
+struct PhyConfig {
+  double tx_power_dbm = 16.0206;
+  double rx_sensitivity_dbm = -96.0;  // frames weaker than this are not received
+};
+
+struct ChannelConfig {
+  bool cutoff = true;  // visit only nodes that can possibly hear a frame (DESIGN.md section 7)
+};
+
+struct NetworkConfig {
+  std::vector<PluginChoice> propagation;  // applied in order
+  PhyConfig phy;
+  ChannelConfig channel;
+  PluginChoice mac;
+  PluginChoice routing;
+};
+
+struct OutputConfig {
+  std::filesystem::path dir;        // resolved: --out, else output.dir, else runs/<name>-seed<seed>
+  bool packet_trace = true;
+  bool mobility_trace = true;
+  double mobility_interval_s = 0.0;  // 0: every step
+  bool traffic_schedule = true;
+};
+
+struct Scenario {
+  std::string name;
+  std::filesystem::path source;  // the file it was read from
+  std::uint64_t seed = 1;
+  double duration_s = 0.0;
+  double step_s = 0.1;
+  SyncMode sync = SyncMode::strict;
+  std::vector<std::filesystem::path> plugin_paths;  // searched before anything else
+  Arena arena;
+  RobotsConfig robots;
+  PluginChoice physics;
+  NetworkConfig network;
+  OutputConfig output;
+
+  // The scenario as run: every key, defaults filled and overrides applied (scenario.resolved.yaml).
+  YAML::Node resolved;
+
+  [[nodiscard]] std::uint64_t step_count() const;
+};
+
+}  // namespace swarmnet

@@ -1,0 +1,50 @@
+// What crosses between the robot half and the network half once per step (DESIGN.md section 2).
+// transport/step_codec encodes these into framed records; both halves see only these types.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "swarmnet/ids.hpp"
+#include "swarmnet/packet.hpp"
+#include "swarmnet/units.hpp"
+#include "swarmnet/vector.hpp"
+
+namespace swarmnet {
+
+// A message a controller sent during a step, stamped by the robot half.
+struct AppMessage {
+  std::uint64_t message_id = 0;  // unique, ascending in send order
+  RobotId source = kNoNode;
+  RobotId destination = kBroadcast;
+  Payload payload;
+};
+
+// Robot half -> network half: step `step` covers [start, start + step length).
+struct StepBatch {
+  std::uint64_t step = 0;
+  SimTime start{};
+  std::vector<Vec2> positions;  // robot i's position at `start`
+  std::vector<AppMessage> messages;
+};
+
+// One application-level delivery: message `message_id` reached robot `receiver`.
+struct Delivery {
+  std::uint64_t message_id = 0;
+  RobotId source = kNoNode;
+  RobotId destination = kBroadcast;  // as addressed (the receiver, or kBroadcast)
+  RobotId receiver = kNoNode;
+  SimTime sent_at{};  // when the network took the message in
+  SimTime delivered_at{};
+  std::uint32_t hops = 0;
+  Payload payload;
+};
+
+// Network half -> robot half, after simulating a step's window.
+struct StepResult {
+  std::uint64_t step = 0;
+  std::vector<Delivery> deliveries;  // in delivery order
+  std::uint64_t events = 0;          // discrete events processed in the window
+};
+
+}  // namespace swarmnet
