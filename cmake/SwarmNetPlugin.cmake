@@ -14,5 +14,8 @@ function(swarmnet_add_plugin name)
     CXX_VISIBILITY_PRESET hidden
     VISIBILITY_INLINES_HIDDEN ON)
   target_link_options(${target} PRIVATE -Wl,--no-undefined)
+  if(TARGET swarmnet_plugins)
+    add_dependencies(swarmnet_plugins ${target})
+  endif()
   install(TARGETS ${target} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/swarmnet/plugins)
 endfunction()

@@ -7,10 +7,18 @@
 
 #include "swarmnet/ids.hpp"
 #include "swarmnet/packet.hpp"
+#include "swarmnet/random.hpp"
 #include "swarmnet/units.hpp"
 #include "swarmnet/vector.hpp"
 
 namespace swarmnet {
+
+// When, inside its step, the network half takes in message `message_id`: a deterministic offset
+// in [0, step) so that one step's messages do not all contend at one instant.
+inline SimTime injection_offset(std::uint64_t seed, std::uint64_t message_id, SimTime step) {
+  const std::uint64_t draw = derive_seed(seed, {hash_name("inject"), message_id});
+  return SimTime{static_cast<std::int64_t>(draw % static_cast<std::uint64_t>(step.count()))};
+}
 
 // A message a controller sent during a step, stamped by the robot half.
 struct AppMessage {

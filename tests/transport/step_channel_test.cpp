@@ -1,0 +1,140 @@
+// The step protocol's records: round trips, and clear errors for malformed or unexpected input.
+#include "step_channel.hpp"
+
+#include <gtest/gtest.h>
+
+#include "inproc_channel.hpp"
+#include "record_codec.hpp"
+
+namespace swarmnet {
+namespace {
+
+StepBatch sample_batch(std::uint32_t robots, std::uint32_t messages) {
+  StepBatch batch;
+  batch.step = 7;
+  batch.start = SimTime{700'000'000};
+  for (std::uint32_t i = 0; i < robots; ++i) batch.positions.emplace_back(i * 1.5, 1000.0 - i);
+  for (std::uint32_t i = 0; i < messages; ++i) {
+    AppMessage m;
+    m.message_id = 100 + i;
+    m.source = i % robots;
+    m.destination = i % 3 == 0 ? kBroadcast : (i + 1) % robots;
+    m.payload.assign(i * 10, static_cast<std::byte>(i));
+    batch.messages.push_back(std::move(m));
+  }
+  return batch;
+}
+
+TEST(StepChannel, BatchRoundTripsAcrossChunks) {
+  InprocChannel link(std::uint64_t{1} << 20);
+  StepChannel robot(link.robot_end(), "the network half");
+  StepChannel network(link.network_end(), "the robot half");
+  const StepBatch sent = sample_batch(2500, 20);  // three positions records
+  ASSERT_TRUE(robot.send_batch(sent).ok());
+  StepBatch got;
+  bool finished = true;
+  const auto r = network.receive_batch(got, finished);
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_FALSE(finished);
+  EXPECT_EQ(got.step, sent.step);
+  EXPECT_EQ(got.start, sent.start);
+  ASSERT_EQ(got.positions.size(), sent.positions.size());
+  for (std::size_t i = 0; i < sent.positions.size(); ++i)
+    EXPECT_EQ(got.positions[i], sent.positions[i]);
+  ASSERT_EQ(got.messages.size(), sent.messages.size());
+  for (std::size_t i = 0; i < sent.messages.size(); ++i) {
+    EXPECT_EQ(got.messages[i].message_id, sent.messages[i].message_id);
+    EXPECT_EQ(got.messages[i].source, sent.messages[i].source);
+    EXPECT_EQ(got.messages[i].destination, sent.messages[i].destination);
+    EXPECT_EQ(got.messages[i].payload, sent.messages[i].payload);
+  }
+  ASSERT_TRUE(robot.send_finish().ok());
+  ASSERT_TRUE(network.receive_batch(got, finished).ok());
+  EXPECT_TRUE(finished);
+}
+
+TEST(StepChannel, ResultAndReportRoundTrip) {
+  InprocChannel link(std::uint64_t{1} << 16);
+  StepChannel robot(link.robot_end(), "the network half");
+  StepChannel network(link.network_end(), "the robot half");
+  StepResult sent;
+  sent.step = 3;
+  sent.events = 12345;
+  for (std::uint32_t i = 0; i < 5; ++i) {
+    Delivery d;
+    d.message_id = i;
+    d.source = 1;
+    d.destination = i == 0 ? kBroadcast : 2;
+    d.receiver = 2 + i;
+    d.sent_at = SimTime{1000 + i};
+    d.delivered_at = SimTime{5000 + i};
+    d.hops = i + 1;
+    d.payload.assign(i, std::byte{0x5a});
+    sent.deliveries.push_back(d);
+  }
+  ASSERT_TRUE(network.send_result(sent).ok());
+  StepResult got;
+  const auto r = robot.receive_result(got);
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(got.step, 3U);
+  EXPECT_EQ(got.events, 12345U);
+  ASSERT_EQ(got.deliveries.size(), 5U);
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_EQ(got.deliveries[i].receiver, sent.deliveries[i].receiver);
+    EXPECT_EQ(got.deliveries[i].destination, sent.deliveries[i].destination);
+    EXPECT_EQ(got.deliveries[i].delivered_at, sent.deliveries[i].delivered_at);
+    EXPECT_EQ(got.deliveries[i].hops, sent.deliveries[i].hops);
+    EXPECT_EQ(got.deliveries[i].payload, sent.deliveries[i].payload);
+  }
+  ASSERT_TRUE(network.send_report(R"({"pdr":0.5})").ok());
+  std::string report;
+  ASSERT_TRUE(robot.receive_report(report).ok());
+  EXPECT_EQ(report, R"({"pdr":0.5})");
+}
+
+TEST(StepChannel, MalformedRecordsAreNamed) {
+  InprocChannel link(std::uint64_t{1} << 16);
+  StepChannel network(link.network_end(), "the robot half");
+  std::vector<std::byte> raw;
+  RecordWriter(raw).put(std::uint32_t{99});
+  ASSERT_EQ(link.robot_end().send(raw), IoStatus::ok);
+  StepBatch batch;
+  bool finished = false;
+  auto r = network.receive_batch(batch, finished);
+  EXPECT_EQ(r.io, IoStatus::corrupt);
+  EXPECT_NE(r.error.find("unknown record type 99"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("the robot half"), std::string::npos) << r.error;
+
+  // A step_begin that is too short.
+  RecordWriter(raw).put(static_cast<std::uint32_t>(RecordType::step_begin)).put(std::uint64_t{1});
+  ASSERT_EQ(link.robot_end().send(raw), IoStatus::ok);
+  r = network.receive_batch(batch, finished);
+  EXPECT_NE(r.error.find("malformed step_begin record"), std::string::npos) << r.error;
+
+  // A delivery where a step_begin is due.
+  RecordWriter(raw).put(static_cast<std::uint32_t>(RecordType::delivery));
+  ASSERT_EQ(link.robot_end().send(raw), IoStatus::ok);
+  r = network.receive_batch(batch, finished);
+  EXPECT_NE(r.error.find("sent a delivery record where step_begin or finish was expected"),
+            std::string::npos)
+      << r.error;
+}
+
+TEST(StepChannel, PeerFailureAndCloseAreExplained) {
+  InprocChannel link(std::uint64_t{1} << 16);
+  StepChannel robot(link.robot_end(), "the network half");
+  StepChannel network(link.network_end(), "the robot half");
+  network.send_failure("plugin 'flooding' threw: out of memory");
+  link.network_end().close();
+  StepResult result;
+  auto r = robot.receive_result(result);
+  EXPECT_EQ(r.error, "the network half failed: plugin 'flooding' threw: out of memory");
+  r = robot.receive_result(result);
+  EXPECT_EQ(r.io, IoStatus::closed);
+  EXPECT_NE(r.error.find("lost the network half"), std::string::npos) << r.error;
+  // The network end stopped consuming: sending to it fails at once instead of filling the ring.
+  EXPECT_EQ(robot.send_batch(sample_batch(3, 1)).io, IoStatus::closed);
+}
+
+}  // namespace
+}  // namespace swarmnet

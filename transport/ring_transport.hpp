@@ -1,0 +1,44 @@
+// A Transport over two SpscRings: one this end produces into, one it consumes from. Where the
+// rings live (heap memory shared by two threads, or a shared-memory segment shared by two
+// processes) is the owner's business.
+#pragma once
+
+#include <string>
+
+#include "spsc_ring.hpp"
+#include "transport.hpp"
+#include "wait_policy.hpp"
+
+namespace swarmnet {
+
+class RingTransport final : public Transport {
+ public:
+  RingTransport(SpscRing outgoing, SpscRing incoming, WaitPolicy policy, std::string description)
+      : outgoing_(outgoing),
+        incoming_(incoming),
+        policy_(std::move(policy)),
+        description_(std::move(description)) {}
+
+  IoStatus send(std::span<const std::byte> record) override {
+    return outgoing_.push(record, policy_);
+  }
+  IoStatus try_send(std::span<const std::byte> record) override {
+    return outgoing_.try_push(record);
+  }
+  IoStatus receive(std::vector<std::byte>& record) override {
+    return incoming_.pop(record, policy_);
+  }
+  void close() override {
+    outgoing_.close_producer();
+    incoming_.close_consumer();
+  }
+  [[nodiscard]] std::string describe() const override { return description_; }
+
+ private:
+  SpscRing outgoing_;
+  SpscRing incoming_;
+  WaitPolicy policy_;
+  std::string description_;
+};
+
+}  // namespace swarmnet

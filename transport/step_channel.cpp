@@ -1,0 +1,264 @@
+#include "step_channel.hpp"
+
+#include <algorithm>
+
+namespace swarmnet {
+
+namespace {
+
+// Positions travel in chunks so that no record approaches a ring's size at any swarm size.
+constexpr std::uint32_t kPositionsPerRecord = 1024;
+constexpr std::uint32_t kMaxTextBytes = 1U << 24U;
+
+std::span<const std::byte> as_bytes(const std::string& text) {
+  return {reinterpret_cast<const std::byte*>(text.data()), text.size()};
+}
+
+}  // namespace
+
+const char* to_string(RecordType type) {
+  switch (type) {
+    case RecordType::step_begin:
+      return "step_begin";
+    case RecordType::positions:
+      return "positions";
+    case RecordType::message:
+      return "message";
+    case RecordType::step_end:
+      return "step_end";
+    case RecordType::delivery:
+      return "delivery";
+    case RecordType::step_done:
+      return "step_done";
+    case RecordType::finish:
+      return "finish";
+    case RecordType::report:
+      return "report";
+    case RecordType::failure:
+      return "failure";
+  }
+  return "unknown";
+}
+
+StepChannel::StepChannel(Transport& transport, std::string peer)
+    : transport_(transport), peer_(std::move(peer)) {}
+
+ProtocolResult StepChannel::send(const char* what) {
+  const IoStatus status = transport_.send(out_);
+  if (status == IoStatus::ok) return {};
+  return {status, "cannot send " + std::string(what) + " to " + peer_ + ": " + to_string(status)};
+}
+
+ProtocolResult StepChannel::receive(RecordType& type, RecordReader*& reader) {
+  const IoStatus status = transport_.receive(in_);
+  if (status != IoStatus::ok) {
+    std::string how = to_string(status);
+    if (status == IoStatus::closed) how = "it closed the channel before finishing";
+    if (status == IoStatus::peer_dead) how = "it is no longer running";
+    if (status == IoStatus::timeout) how = "no answer within the step timeout; it hangs";
+    return {status, "lost " + peer_ + ": " + how};
+  }
+  reader_.emplace(in_);
+  std::uint32_t raw = 0;
+  if (!reader_->get(raw) || raw < 1 || raw > static_cast<std::uint32_t>(RecordType::failure)) {
+    return {IoStatus::corrupt,
+            "malformed record from " + peer_ + ": unknown record type " + std::to_string(raw)};
+  }
+  type = static_cast<RecordType>(raw);
+  reader = &*reader_;
+  if (type == RecordType::failure) {
+    std::vector<std::byte> text;
+    if (!reader->get_bytes(text, kMaxTextBytes)) return malformed(type);
+    return {
+        IoStatus::closed,
+        peer_ + " failed: " + std::string(reinterpret_cast<const char*>(text.data()), text.size())};
+  }
+  return {};
+}
+
+ProtocolResult StepChannel::malformed(RecordType type) const {
+  return {IoStatus::corrupt, "malformed " + std::string(to_string(type)) + " record from " + peer_ +
+                                 " (" + std::to_string(in_.size()) + " bytes)"};
+}
+
+ProtocolResult StepChannel::unexpected(RecordType got, const char* expected) const {
+  return {IoStatus::corrupt, "protocol error: " + peer_ + " sent a " + to_string(got) +
+                                 " record where " + expected + " was expected"};
+}
+
+ProtocolResult StepChannel::send_batch(const StepBatch& batch) {
+  const auto robots = static_cast<std::uint32_t>(batch.positions.size());
+  RecordWriter(out_)
+      .put(static_cast<std::uint32_t>(RecordType::step_begin))
+      .put(batch.step)
+      .put(batch.start.count())
+      .put(robots)
+      .put(static_cast<std::uint32_t>(batch.messages.size()));
+  if (auto r = send("step_begin"); !r.ok()) return r;
+  for (std::uint32_t first = 0; first < robots; first += kPositionsPerRecord) {
+    const std::uint32_t count = std::min(kPositionsPerRecord, robots - first);
+    RecordWriter writer(out_);
+    writer.put(static_cast<std::uint32_t>(RecordType::positions)).put(first).put(count);
+    for (std::uint32_t i = first; i < first + count; ++i) {
+      writer.put(batch.positions[i].x()).put(batch.positions[i].y());
+    }
+    if (auto r = send("positions"); !r.ok()) return r;
+  }
+  for (const AppMessage& message : batch.messages) {
+    RecordWriter(out_)
+        .put(static_cast<std::uint32_t>(RecordType::message))
+        .put(message.message_id)
+        .put(message.source)
+        .put(message.destination)
+        .put_bytes(message.payload);
+    if (auto r = send("message"); !r.ok()) return r;
+  }
+  RecordWriter(out_).put(static_cast<std::uint32_t>(RecordType::step_end)).put(batch.step);
+  return send("step_end");
+}
+
+ProtocolResult StepChannel::receive_batch(StepBatch& batch, bool& finished) {
+  finished = false;
+  RecordType type{};
+  RecordReader* reader = nullptr;
+  if (auto r = receive(type, reader); !r.ok()) return r;
+  if (type == RecordType::finish) {
+    finished = true;
+    return reader->at_end() ? ProtocolResult{} : malformed(type);
+  }
+  if (type != RecordType::step_begin) return unexpected(type, "step_begin or finish");
+  std::int64_t start_ns = 0;
+  std::uint32_t robots = 0;
+  std::uint32_t messages = 0;
+  if (!reader->get(batch.step) || !reader->get(start_ns) || !reader->get(robots) ||
+      !reader->get(messages) || !reader->at_end()) {
+    return malformed(type);
+  }
+  batch.start = SimTime{start_ns};
+  batch.positions.resize(robots);
+  std::uint32_t filled = 0;
+  while (filled < robots) {
+    if (auto r = receive(type, reader); !r.ok()) return r;
+    if (type != RecordType::positions) return unexpected(type, "positions");
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+    if (!reader->get(first) || !reader->get(count) || first != filled || count > robots - first ||
+        reader->remaining() != std::size_t{count} * 2 * sizeof(double)) {
+      return malformed(type);
+    }
+    for (std::uint32_t i = first; i < first + count; ++i) {
+      double x = 0.0;
+      double y = 0.0;
+      reader->get(x);
+      reader->get(y);
+      batch.positions[i] = Vec2(x, y);
+    }
+    filled += count;
+  }
+  batch.messages.resize(messages);
+  for (AppMessage& message : batch.messages) {
+    if (auto r = receive(type, reader); !r.ok()) return r;
+    if (type != RecordType::message) return unexpected(type, "message");
+    if (!reader->get(message.message_id) || !reader->get(message.source) ||
+        !reader->get(message.destination) ||
+        !reader->get_bytes(message.payload, kMaxPayloadBytes) || !reader->at_end()) {
+      return malformed(type);
+    }
+  }
+  if (auto r = receive(type, reader); !r.ok()) return r;
+  if (type != RecordType::step_end) return unexpected(type, "step_end");
+  std::uint64_t step = 0;
+  if (!reader->get(step) || !reader->at_end()) return malformed(type);
+  if (step != batch.step) {
+    return {IoStatus::corrupt, "protocol error: " + peer_ + " ended step " + std::to_string(step) +
+                                   " inside step " + std::to_string(batch.step)};
+  }
+  return {};
+}
+
+ProtocolResult StepChannel::send_result(const StepResult& result) {
+  for (const Delivery& delivery : result.deliveries) {
+    RecordWriter(out_)
+        .put(static_cast<std::uint32_t>(RecordType::delivery))
+        .put(delivery.message_id)
+        .put(delivery.source)
+        .put(delivery.destination)
+        .put(delivery.receiver)
+        .put(delivery.sent_at.count())
+        .put(delivery.delivered_at.count())
+        .put(delivery.hops)
+        .put_bytes(delivery.payload);
+    if (auto r = send("delivery"); !r.ok()) return r;
+  }
+  RecordWriter(out_)
+      .put(static_cast<std::uint32_t>(RecordType::step_done))
+      .put(result.step)
+      .put(result.events)
+      .put(static_cast<std::uint32_t>(result.deliveries.size()));
+  return send("step_done");
+}
+
+ProtocolResult StepChannel::receive_result(StepResult& result) {
+  result.deliveries.clear();
+  for (;;) {
+    RecordType type{};
+    RecordReader* reader = nullptr;
+    if (auto r = receive(type, reader); !r.ok()) return r;
+    if (type == RecordType::delivery) {
+      Delivery& d = result.deliveries.emplace_back();
+      std::int64_t sent = 0;
+      std::int64_t delivered = 0;
+      if (!reader->get(d.message_id) || !reader->get(d.source) || !reader->get(d.destination) ||
+          !reader->get(d.receiver) || !reader->get(sent) || !reader->get(delivered) ||
+          !reader->get(d.hops) || !reader->get_bytes(d.payload, kMaxPayloadBytes) ||
+          !reader->at_end()) {
+        return malformed(type);
+      }
+      d.sent_at = SimTime{sent};
+      d.delivered_at = SimTime{delivered};
+      continue;
+    }
+    if (type != RecordType::step_done) return unexpected(type, "delivery or step_done");
+    std::uint32_t count = 0;
+    if (!reader->get(result.step) || !reader->get(result.events) || !reader->get(count) ||
+        !reader->at_end()) {
+      return malformed(type);
+    }
+    if (count != result.deliveries.size()) {
+      return {IoStatus::corrupt, "protocol error: " + peer_ + " announced " +
+                                     std::to_string(count) + " deliveries but sent " +
+                                     std::to_string(result.deliveries.size())};
+    }
+    return {};
+  }
+}
+
+ProtocolResult StepChannel::send_finish() {
+  RecordWriter(out_).put(static_cast<std::uint32_t>(RecordType::finish));
+  return send("finish");
+}
+
+ProtocolResult StepChannel::send_report(const std::string& json) {
+  RecordWriter(out_).put(static_cast<std::uint32_t>(RecordType::report)).put_bytes(as_bytes(json));
+  return send("report");
+}
+
+ProtocolResult StepChannel::receive_report(std::string& json) {
+  RecordType type{};
+  RecordReader* reader = nullptr;
+  if (auto r = receive(type, reader); !r.ok()) return r;
+  if (type != RecordType::report) return unexpected(type, "report");
+  std::vector<std::byte> text;
+  if (!reader->get_bytes(text, kMaxTextBytes) || !reader->at_end()) return malformed(type);
+  json.assign(reinterpret_cast<const char*>(text.data()), text.size());
+  return {};
+}
+
+void StepChannel::send_failure(const std::string& message) {
+  RecordWriter(out_)
+      .put(static_cast<std::uint32_t>(RecordType::failure))
+      .put_bytes(as_bytes(message));
+  (void)transport_.try_send(out_);
+}
+
+}  // namespace swarmnet

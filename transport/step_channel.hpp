@@ -1,0 +1,78 @@
+// The step protocol of DESIGN.md section 2 as records over a Transport.
+//
+// Robot half -> network half, per step: step_begin, positions (in chunks), one message record
+// per application message, step_end. At the end: finish.
+// Network half -> robot half, per step: one delivery record per delivery, step_done. After
+// finish: report (the network's metrics as JSON text).
+// Either side may send failure (a text) before it stops, so the other can say why.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "record_codec.hpp"
+#include "ring_status.hpp"
+#include "step_data.hpp"
+#include "transport.hpp"
+
+namespace swarmnet {
+
+enum class RecordType : std::uint32_t {
+  step_begin = 1,
+  positions = 2,
+  message = 3,
+  step_end = 4,
+  delivery = 5,
+  step_done = 6,
+  finish = 7,
+  report = 8,
+  failure = 9,
+};
+
+const char* to_string(RecordType type);
+
+// The outcome of one protocol operation: ok, or what went wrong in words naming the peer.
+struct ProtocolResult {
+  IoStatus io = IoStatus::ok;
+  std::string error;  // empty when ok
+
+  [[nodiscard]] bool ok() const { return error.empty(); }
+};
+
+class StepChannel {
+ public:
+  // `peer` names the other half in error messages ("the network half").
+  StepChannel(Transport& transport, std::string peer);
+
+  // Robot side.
+  ProtocolResult send_batch(const StepBatch& batch);
+  ProtocolResult receive_result(StepResult& result);
+  ProtocolResult send_finish();
+  ProtocolResult receive_report(std::string& json);
+
+  // Network side: fills `batch`, or sets `finished` when the robot half sent finish.
+  ProtocolResult receive_batch(StepBatch& batch, bool& finished);
+  ProtocolResult send_result(const StepResult& result);
+  ProtocolResult send_report(const std::string& json);
+
+  // Best effort: tells the peer why this side stops. Never waits.
+  void send_failure(const std::string& message);
+
+  [[nodiscard]] Transport& transport() { return transport_; }
+
+ private:
+  ProtocolResult send(const char* what);
+  ProtocolResult receive(RecordType& type, RecordReader*& reader);
+  ProtocolResult malformed(RecordType type) const;
+  ProtocolResult unexpected(RecordType got, const char* expected) const;
+
+  Transport& transport_;
+  std::string peer_;
+  std::vector<std::byte> out_;
+  std::vector<std::byte> in_;
+  std::optional<RecordReader> reader_;
+};
+
+}  // namespace swarmnet
