@@ -1,0 +1,134 @@
+// The swarmnet command: run, validate, plugins.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "default_scenario.hpp"
+#include "plugin/plugin_catalog.hpp"
+#include "plugin/plugin_loader.hpp"
+#include "run/run.hpp"
+#include "scenario/scenario_loader.hpp"
+
+namespace {
+
+// Exit codes: 0 success, 1 the run failed, 2 bad input (usage, scenario, plugin).
+constexpr int kRunFailed = 1;
+constexpr int kBadInput = 2;
+
+int fail(int code, const std::string& message) {
+  std::fprintf(stderr, "swarmnet: error: %s\n", message.c_str());
+  return code;
+}
+
+struct ScenarioArguments {
+  std::string file;
+  std::vector<std::string> set;
+  std::optional<std::uint64_t> seed;
+  std::optional<std::string> out;
+};
+
+void add_scenario_options(CLI::App* command, ScenarioArguments& args, bool with_outputs) {
+  command
+      ->add_option("--set", args.set,
+                   "override a scenario value, e.g. --set robots.count=100 (repeatable)")
+      ->type_name("KEY.PATH=VALUE");
+  command->add_option("--seed", args.seed, "master random seed (overrides the file's seed)");
+  if (with_outputs)
+    command->add_option("--out", args.out, "run directory (default runs/NAME-seedSEED)");
+}
+
+swarmnet::Scenario load(const ScenarioArguments& args) {
+  swarmnet::ScenarioOverrides overrides;
+  overrides.set = args.set;
+  overrides.seed = args.seed;
+  if (args.out) overrides.out_dir = *args.out;
+  swarmnet::PluginLoader loader;
+  return swarmnet::load_scenario(args.file, overrides, loader);
+}
+
+int run_command(ScenarioArguments args, bool quiet) {
+  if (args.file.empty()) args.file = swarmnet::default_scenario_path().string();
+  swarmnet::Scenario scenario;
+  try {
+    scenario = load(args);
+  } catch (const std::exception& error) {
+    return fail(kBadInput, error.what());
+  }
+  try {
+    swarmnet::RunOptions options;
+    options.progress = quiet ? nullptr : stderr;
+    const auto outcome = swarmnet::run_scenario(scenario, options);
+    if (!quiet) swarmnet::print_summary(stdout, outcome);
+  } catch (const std::exception& error) {
+    return fail(kRunFailed, error.what());
+  }
+  return 0;
+}
+
+int validate_command(const ScenarioArguments& args) {
+  try {
+    const swarmnet::Scenario scenario = load(args);
+    std::printf(
+        "%s: valid scenario '%s': %u robots, %llu steps of %g s, %zu controller(s), "
+        "routing %s over %s\n",
+        args.file.c_str(), scenario.name.c_str(), scenario.robots.count,
+        static_cast<unsigned long long>(scenario.step_count()), scenario.step_s,
+        scenario.robots.controllers.size(), scenario.network.routing.name.c_str(),
+        scenario.network.mac.name.c_str());
+  } catch (const std::exception& error) {
+    return fail(kBadInput, error.what());
+  }
+  return 0;
+}
+
+int plugins_command(const std::string& name) {
+  try {
+    swarmnet::PluginLoader loader;
+    if (name.empty()) {
+      swarmnet::print_plugin_table(std::cout, loader);
+    } else {
+      swarmnet::print_plugin_details(std::cout, *loader.find(name));
+    }
+  } catch (const std::exception& error) {
+    return fail(kBadInput, error.what());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"SwarmNet: networked robot swarms, robot and network co-simulation"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("swarmnet ") + SWARMNET_VERSION);
+
+  ScenarioArguments run_args;
+  bool quiet = false;
+  auto* run = app.add_subcommand("run", "run a scenario (configs/quickstart.yaml by default)");
+  run->add_option("file", run_args.file, "scenario file")->check(CLI::ExistingFile);
+  add_scenario_options(run, run_args, true);
+  run->add_flag("-q,--quiet", quiet, "print nothing but errors");
+
+  ScenarioArguments validate_args;
+  auto* validate = app.add_subcommand("validate", "check a scenario without running it");
+  validate->add_option("file", validate_args.file, "scenario file")->required();
+  add_scenario_options(validate, validate_args, true);
+
+  std::string plugin_name;
+  auto* plugins = app.add_subcommand("plugins", "list plugins, or describe one");
+  plugins->add_option("name", plugin_name, "plugin to describe");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error) == 0 ? 0 : kBadInput;
+  }
+  if (*run) return run_command(run_args, quiet);
+  if (*validate) return validate_command(validate_args);
+  if (*plugins) return plugins_command(plugin_name);
+  return kBadInput;
+}
