@@ -122,6 +122,10 @@ int main(int argc, char** argv) {
   auto* plugins = app.add_subcommand("plugins", "list plugins, or describe one");
   plugins->add_option("name", plugin_name, "plugin to describe");
 
+  if (argc == 2 && std::string(argv[1]) == "help") {
+    std::cout << app.help();
+    return 0;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
