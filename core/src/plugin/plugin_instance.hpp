@@ -17,6 +17,18 @@ class PluginInstance {
   PluginInstance(std::shared_ptr<PluginLibrary> library, std::unique_ptr<Plugin> object)
       : library_(std::move(library)), object_(std::move(object)) {}
 
+  PluginInstance(const PluginInstance&) = delete;
+  PluginInstance& operator=(const PluginInstance&) = delete;
+  PluginInstance(PluginInstance&&) noexcept = default;
+  // By hand: the defaulted one would release the old library before destroying the old object,
+  // unloading the code that object's destructor runs.
+  PluginInstance& operator=(PluginInstance&& other) noexcept {
+    object_ = std::move(other.object_);
+    library_ = std::move(other.library_);
+    return *this;
+  }
+  ~PluginInstance() = default;
+
   // Members are destroyed in reverse order: object_ first, then library_.
   Interface* get() const { return static_cast<Interface*>(object_.get()); }
   Interface* operator->() const { return get(); }

@@ -39,6 +39,20 @@ PluginLoader::PluginLoader(std::vector<std::filesystem::path> scenario_dirs)
   search_path_.emplace_back(SWARMNET_INSTALL_PLUGIN_DIR);
 }
 
+void PluginLoader::prepend_directories(std::vector<std::filesystem::path> dirs) {
+  std::vector<std::filesystem::path> path;
+  for (auto& dir : dirs) {
+    if (std::find(path.begin(), path.end(), dir) == path.end()) path.push_back(std::move(dir));
+  }
+  for (const auto& dir : search_path_) {
+    if (std::find(path.begin(), path.end(), dir) == path.end()) path.push_back(dir);
+  }
+  if (path != search_path_) {
+    search_path_ = std::move(path);
+    cache_.clear();
+  }
+}
+
 std::shared_ptr<PluginLibrary> PluginLoader::find(const std::string& name) {
   if (auto it = cache_.find(name); it != cache_.end()) return it->second;
   const std::string file = plugin_file_name(name);

@@ -31,6 +31,11 @@ class PluginLoader {
   // Every directory searched, in order.
   [[nodiscard]] const std::vector<std::filesystem::path>& search_path() const { return search_path_; }
 
+  // Puts `dirs` at the front of the search path, in the given order (a scenario's plugin_paths).
+  // A directory already in the path moves to its new place rather than appearing twice. When the
+  // path changes, the cache is cleared so that find() looks again.
+  void prepend_directories(std::vector<std::filesystem::path> dirs);
+
   // The library of plugin `name`, opened once and cached. Throws PluginError naming the plugin,
   // every place searched, and the reason each candidate failed.
   std::shared_ptr<PluginLibrary> find(const std::string& name);

@@ -1,0 +1,20 @@
+// "Did you mean ...?": the known name closest to a misspelt one.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace swarmnet {
+
+// Edit distance counting insertions, deletions, substitutions and swaps of adjacent characters
+// (optimal string alignment), ignoring ASCII case.
+std::size_t edit_distance(std::string_view a, std::string_view b);
+
+// The candidate nearest to `word`, when it is close enough to be a likely typo: at most 1 edit for
+// words up to 4 characters, 2 up to 8, 3 beyond. Ties go to the earlier candidate.
+std::optional<std::string> nearest_name(std::string_view word,
+                                        const std::vector<std::string>& candidates);
+
+}  // namespace swarmnet

@@ -1,0 +1,13 @@
+#include "scenario/scenario.hpp"
+
+#include <cmath>
+
+namespace swarmnet {
+
+std::uint64_t Scenario::step_count() const {
+  // load_scenario() guarantees duration_s is a whole number of steps, within 1e-9 relative.
+  if (step_s <= 0.0) return 0;
+  return static_cast<std::uint64_t>(std::llround(duration_s / step_s));
+}
+
+}  // namespace swarmnet

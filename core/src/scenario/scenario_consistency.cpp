@@ -1,0 +1,192 @@
+#include "scenario/scenario_consistency.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+#include "plugin/plugin_catalog.hpp"
+#include "scenario/free_area.hpp"
+
+namespace swarmnet {
+
+namespace {
+
+// The node at `path` of the checked tree, if it passed its check.
+std::optional<YAML::Node> at(const YAML::Node& tree, const KeyPath& path) {
+  YAML::Node node;
+  node.reset(tree);
+  for (const auto& part : path.parts()) {
+    const YAML::Node& parent = node;
+    if (!parent.IsMap() || !parent[part]) return std::nullopt;
+    YAML::Node child = parent[part];
+    node.reset(child);
+  }
+  return node;
+}
+
+std::optional<double> real_at(const YAML::Node& tree, const KeyPath& path) {
+  const auto node = at(tree, path);
+  if (!node || !node->IsScalar()) return std::nullopt;
+  return node->as<double>();
+}
+
+std::optional<Rect> rect_of(const YAML::Node& node) {
+  for (const char* key : {"x_min_m", "y_min_m", "x_max_m", "y_max_m"}) {
+    if (!node[key]) return std::nullopt;
+  }
+  return Rect{node["x_min_m"].as<double>(), node["y_min_m"].as<double>(),
+              node["x_max_m"].as<double>(), node["y_max_m"].as<double>()};
+}
+
+YAML::Node rect_node(const Rect& rect) {
+  YAML::Node node(YAML::NodeType::Map);
+  node["x_min_m"] = format_real(rect.x_min_m);
+  node["y_min_m"] = format_real(rect.y_min_m);
+  node["x_max_m"] = format_real(rect.x_max_m);
+  node["y_max_m"] = format_real(rect.y_max_m);
+  node.SetStyle(YAML::EmitterStyle::Flow);
+  return node;
+}
+
+// Numbers in messages, without the noise of binary fractions (11 * 0.1 = 1.1000000000000001).
+std::string approx(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.12g", value);
+  return buffer;
+}
+
+// Areas, to a precision that reads well.
+std::string area(double value_m2) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.4g", value_m2);
+  return std::string(buffer) + " m^2";
+}
+
+std::string describe(const Rect& rect) {
+  return "[" + approx(rect.x_min_m) + ", " + approx(rect.x_max_m) + "] x [" + approx(rect.y_min_m) +
+         ", " + approx(rect.y_max_m) + "]";
+}
+
+// Refuses an empty rectangle or one reaching outside the arena; true when it is usable.
+bool check_rect(const Rect& rect, double width_m, double height_m, const KeyPath& path,
+                const YAML::Mark& mark, const std::string& what, ProblemList& problems) {
+  if (!(rect.x_min_m < rect.x_max_m) || !(rect.y_min_m < rect.y_max_m)) {
+    problems.add(path, mark, describe(rect) + " is empty",
+                 "x_min_m < x_max_m and y_min_m < y_max_m");
+    return false;
+  }
+  if (rect.x_min_m < 0.0 || rect.y_min_m < 0.0 || rect.x_max_m > width_m ||
+      rect.y_max_m > height_m) {
+    problems.add(path, mark,
+                 describe(rect) + " reaches outside the arena [0, " + approx(width_m) + "] x [0, " +
+                     approx(height_m) + "]",
+                 what + " inside the arena");
+    return false;
+  }
+  return true;
+}
+
+void check_steps(const YAML::Node& tree, const ScenarioChecker& checker, ProblemList& problems) {
+  const KeyPath duration_path({"duration_s"});
+  const auto duration = real_at(tree, duration_path);
+  const auto step = real_at(tree, KeyPath({"step_s"}));
+  if (!duration || !step) return;
+  const YAML::Mark mark = checker.mark_of(duration_path);
+  const double steps = std::round(*duration / *step);
+  const std::string expected = "a positive multiple of step_s";
+  if (steps < 1.0) {
+    problems.add(duration_path, mark,
+                 approx(*duration) + " s is shorter than one step of " + approx(*step) + " s",
+                 expected);
+  } else if (steps > kMaxSteps) {
+    problems.add(duration_path, mark,
+                 approx(*duration) + " s is " + approx(steps) + " steps of " + approx(*step) + " s",
+                 "at most " + approx(kMaxSteps) + " steps");
+  } else if (std::fabs(*duration - steps * *step) > 1e-9 * *duration) {
+    const double below = std::floor(*duration / *step) * *step;
+    const double above = below + *step;
+    problems.add(
+        duration_path, mark,
+        approx(*duration) + " s is not a whole number of steps of " + approx(*step) + " s",
+        expected + ", such as " + (below > 0.0 ? approx(below) + " or " : "") + approx(above));
+  }
+}
+
+}  // namespace
+
+void check_consistency(YAML::Node& tree, const ScenarioChecker& checker, ProblemList& problems) {
+  check_steps(tree, checker, problems);
+
+  const auto width = real_at(tree, KeyPath({"arena", "width_m"}));
+  const auto height = real_at(tree, KeyPath({"arena", "height_m"}));
+  if (!width || !height) return;
+
+  // Obstacles inside the arena.
+  const KeyPath obstacles_path({"arena", "obstacles"});
+  const auto obstacles_node = at(tree, obstacles_path);
+  std::vector<Rect> obstacles;
+  bool obstacles_valid = obstacles_node.has_value();
+  if (obstacles_node) {
+    for (std::size_t i = 0; i < obstacles_node->size(); ++i) {
+      const auto rect = rect_of((*obstacles_node)[i]);
+      if (!rect) continue;
+      const KeyPath path = obstacles_path / i;
+      if (check_rect(*rect, *width, *height, path, checker.mark_of(path), "an obstacle",
+                     problems)) {
+        obstacles.push_back(*rect);
+      } else {
+        obstacles_valid = false;
+      }
+    }
+  }
+
+  // The placement region: inside the arena, or the whole arena when not given.
+  const KeyPath placement_path({"robots", "placement"});
+  auto placement = at(tree, placement_path);
+  if (!placement) return;
+  const KeyPath region_path = placement_path / "region";
+  std::optional<Rect> region;
+  if (const auto region_node = at(tree, region_path)) {
+    region = rect_of(*region_node);
+    if (region && !check_rect(*region, *width, *height, region_path, checker.mark_of(region_path),
+                              "a region", problems)) {
+      region.reset();
+    }
+  } else if (!checker.mark_of(region_path).is_null()) {
+    return;  // given, but invalid: already reported
+  } else {
+    region = Rect{0.0, 0.0, *width, *height};
+    (*placement)["region"] = rect_node(*region);
+  }
+  if (!region || !obstacles_valid) return;
+
+  // Do the robots fit?
+  const KeyPath count_path({"robots", "count"});
+  const KeyPath radius_path({"robots", "radius_m"});
+  const auto count = real_at(tree, count_path);
+  const auto radius = real_at(tree, radius_path);
+  if (!count || !radius) return;
+  if (2.0 * *radius > region->width_m() || 2.0 * *radius > region->height_m()) {
+    problems.add(radius_path, checker.mark_of(radius_path),
+                 "a robot of radius " + approx(*radius) +
+                     " m does not fit in the placement region " + describe(*region),
+                 "a radius below half the region's smaller side");
+    return;
+  }
+  const double free_m2 = free_area(*region, obstacles);
+  const double disc_m2 = std::numbers::pi * *radius * *radius;
+  const double robots_m2 = *count * disc_m2;
+  if (robots_m2 > 0.5 * free_m2) {
+    const double most = std::floor(0.5 * free_m2 / disc_m2);
+    problems.add(count_path, checker.mark_of(count_path),
+                 approx(*count) + " robots of radius " + approx(*radius) + " m cover " +
+                     area(robots_m2) + ", more than half of the " + area(free_m2) +
+                     " free area of the placement region",
+                 "at most " + approx(most) +
+                     " robots of this size (or a smaller radius_m, or a larger region)");
+  }
+}
+
+}  // namespace swarmnet

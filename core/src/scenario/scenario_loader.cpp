@@ -1,0 +1,233 @@
+#include "scenario/scenario_loader.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+#include "scenario/problem_list.hpp"
+#include "scenario/scenario_checker.hpp"
+#include "scenario/scenario_consistency.hpp"
+#include "scenario/scenario_overrides.hpp"
+#include "scenario/scenario_schema.hpp"
+
+namespace swarmnet {
+
+namespace {
+
+std::string join_lines(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const auto& line : lines) {
+    if (!text.empty()) text += '\n';
+    text += line;
+  }
+  return text;
+}
+
+std::string read_file(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    throw ScenarioError(
+        {file.string() + ": cannot read the scenario file (" + std::strerror(errno) + ")"});
+  }
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) {
+    throw ScenarioError({file.string() + ": is a directory, not a scenario file"});
+  }
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The tree's maps rebuilt in schema order (values derived after the check were appended last).
+YAML::Node ordered(const KeySpec& spec, const YAML::Node& node) {
+  const auto ordered_map = [](const std::vector<KeySpec>& keys, bool flow, const YAML::Node& map) {
+    YAML::Node out(YAML::NodeType::Map);
+    for (const auto& key : keys) {
+      if (map[key.name]) out[key.name] = ordered(key, map[key.name]);
+    }
+    if (flow || out.size() == 0) out.SetStyle(YAML::EmitterStyle::Flow);
+    return out;
+  };
+  if (spec.form == KeyForm::map) return ordered_map(spec.keys, spec.flow, node);
+  if (spec.form == KeyForm::map_list) {
+    YAML::Node out(YAML::NodeType::Sequence);
+    for (const auto& element : node) out.push_back(ordered_map(spec.keys, spec.flow, element));
+    if (out.size() == 0) out.SetStyle(YAML::EmitterStyle::Flow);
+    return out;
+  }
+  return node;
+}
+
+Rect rect_from(const YAML::Node& node) {
+  return Rect{node["x_min_m"].as<double>(), node["y_min_m"].as<double>(),
+              node["x_max_m"].as<double>(), node["y_max_m"].as<double>()};
+}
+
+// Reads the checked tree, which holds every key, into a Scenario.
+Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>& plugins) {
+  const auto plugin = [&plugins](const std::string& path) { return plugins.at(path); };
+  const auto plugin_list = [&plugins](const std::string& path, std::size_t count) {
+    std::vector<PluginChoice> list;
+    for (std::size_t i = 0; i < count; ++i)
+      list.push_back(plugins.at(path + "." + std::to_string(i)));
+    return list;
+  };
+  Scenario s;
+  s.name = tree["name"].as<std::string>();
+  s.seed = tree["seed"].as<std::uint64_t>();
+  s.duration_s = tree["duration_s"].as<double>();
+  s.step_s = tree["step_s"].as<double>();
+  s.sync = tree["sync"].as<std::string>() == "pipelined" ? SyncMode::pipelined : SyncMode::strict;
+  for (const auto& dir : tree["plugin_paths"]) s.plugin_paths.emplace_back(dir.as<std::string>());
+
+  const YAML::Node arena = tree["arena"];
+  s.arena.width_m = arena["width_m"].as<double>();
+  s.arena.height_m = arena["height_m"].as<double>();
+  for (const auto& obstacle : arena["obstacles"]) s.arena.obstacles.push_back(rect_from(obstacle));
+
+  const YAML::Node robots = tree["robots"];
+  s.robots.count = robots["count"].as<std::uint32_t>();
+  s.robots.radius_m = robots["radius_m"].as<double>();
+  s.robots.axle_m = robots["axle_m"].as<double>();
+  s.robots.max_speed_mps = robots["max_speed_mps"].as<double>();
+  s.robots.placement = rect_from(robots["placement"]["region"]);
+  s.robots.proximity.rays = robots["proximity"]["rays"].as<std::uint32_t>();
+  s.robots.proximity.range_m = robots["proximity"]["range_m"].as<double>();
+  s.robots.controllers = plugin_list("robots.controllers", robots["controllers"].size());
+
+  s.physics = plugin("physics");
+
+  const YAML::Node network = tree["network"];
+  s.network.propagation = plugin_list("network.propagation", network["propagation"].size());
+  s.network.phy.tx_power_dbm = network["phy"]["tx_power_dbm"].as<double>();
+  s.network.phy.rx_sensitivity_dbm = network["phy"]["rx_sensitivity_dbm"].as<double>();
+  s.network.channel.cutoff = network["channel"]["cutoff"].as<bool>();
+  s.network.mac = plugin("network.mac");
+  s.network.routing = plugin("network.routing");
+
+  const YAML::Node output = tree["output"];
+  s.output.dir = output["dir"].as<std::string>();
+  s.output.packet_trace = output["packet_trace"].as<bool>();
+  s.output.mobility_trace = output["mobility_trace"].as<bool>();
+  s.output.mobility_interval_s = output["mobility_interval_s"].as<double>();
+  s.output.traffic_schedule = output["traffic_schedule"].as<bool>();
+  return s;
+}
+
+// output.dir: --out, else the file's output.dir, else runs/<name>-seed<seed>.
+void resolve_output_dir(YAML::Node& tree, const ScenarioOverrides& overrides,
+                        ProblemList& problems) {
+  const YAML::Node& checked = tree;
+  if (!checked["output"]) return;  // output itself is invalid: already reported
+  YAML::Node output = tree["output"];
+  if (overrides.out_dir) {
+    if (overrides.out_dir->empty()) {
+      problems.add_line("--out: output.dir: is empty; expected a directory");
+      return;
+    }
+    output["dir"] = overrides.out_dir->string();
+  } else if (!checked["output"]["dir"] && checked["name"] && checked["seed"]) {
+    output["dir"] =
+        "runs/" + checked["name"].as<std::string>() + "-seed" + checked["seed"].as<std::string>();
+  }
+}
+
+void describe_keys(const KeySpec& spec, const std::string& prefix,
+                   std::vector<ScenarioKeyInfo>* rows) {
+  for (const auto& key : spec.keys) {
+    const std::string path = prefix.empty() ? key.name : prefix + "." + key.name;
+    std::string fallback = key.default_yaml.value_or("");
+    if (!key.computed.empty()) fallback = key.computed;
+    if (!key.default_plugin.empty()) fallback = "{plugin: " + key.default_plugin + "}";
+    if (key.form == KeyForm::map && !key.is_required() && fallback.empty()) fallback = "{}";
+    rows->push_back(ScenarioKeyInfo{path, key.describe(), key.rule.unit, fallback,
+                                    key.is_required(), key.help});
+    if (key.form == KeyForm::map) describe_keys(key, path, rows);
+    if (key.form == KeyForm::map_list) describe_keys(key, path + "[]", rows);
+    if (key.form == KeyForm::plugin || key.form == KeyForm::plugin_list) {
+      const std::string element = key.form == KeyForm::plugin ? path : path + "[]";
+      const std::string kind = to_string(key.plugin_kind);
+      rows->push_back(ScenarioKeyInfo{element + ".plugin", "the name of a " + kind + " plugin", "",
+                                      key.default_plugin, key.default_plugin.empty(),
+                                      "Which " + kind + " plugin."});
+      rows->push_back(
+          ScenarioKeyInfo{element + ".params", "a mapping of the plugin's parameters", "", "{}",
+                          false, "Parameters the plugin declares; the rest take its defaults."});
+    }
+  }
+}
+
+// Loads scenario `text`, named `origin` in messages; relative plugin_paths start at `base_dir`.
+Scenario load_text(const std::string& text, const std::string& origin,
+                   const std::filesystem::path& base_dir, const ScenarioOverrides& overrides,
+                   PluginLoader& loader) {
+  ProblemList problems(origin);
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::ParserException& error) {
+    throw ScenarioError(
+        {problems.locate(KeyPath{}, error.mark) + ": YAML syntax error: " + error.msg});
+  }
+  if (documents.size() > 1) {
+    problems.add(KeyPath{}, documents[1].Mark(),
+                 "the file holds " + std::to_string(documents.size()) + " YAML documents",
+                 "one document");
+  }
+  YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
+  if (root.IsNull()) root = YAML::Node(YAML::NodeType::Map);  // checked as an empty mapping
+  if (!root.IsMap()) {
+    problems.add(KeyPath{}, root.Mark(), "the file is not a mapping of keys",
+                 "a mapping of scenario keys (see docs/scenario.md)");
+    throw ScenarioError(problems.lines());
+  }
+
+  apply_overrides(root, overrides.set, problems);
+  if (overrides.seed) {
+    root["seed"] = std::to_string(*overrides.seed);
+    problems.mark_overridden(KeyPath({"seed"}), "--seed");
+  }
+
+  const KeySpec& schema = scenario_schema();
+  ScenarioChecker checker(problems, loader, base_dir);
+  YAML::Node tree = checker.check_root(schema, root);
+  check_consistency(tree, checker, problems);
+  resolve_output_dir(tree, overrides, problems);
+  if (!problems.empty()) throw ScenarioError(problems.lines());
+
+  Scenario scenario = build(tree, checker.plugins());
+  scenario.source = origin;
+  scenario.resolved = ordered(schema, tree);
+  return scenario;
+}
+
+}  // namespace
+
+ScenarioError::ScenarioError(std::vector<std::string> problems)
+    : std::runtime_error(join_lines(problems)), problems_(std::move(problems)) {}
+
+Scenario load_scenario(const std::filesystem::path& file, const ScenarioOverrides& overrides,
+                       PluginLoader& loader) {
+  Scenario scenario =
+      load_text(read_file(file), file.string(), file.parent_path(), overrides, loader);
+  scenario.source = file;
+  return scenario;
+}
+
+Scenario load_scenario_text(const std::string& yaml, const std::string& origin,
+                            PluginLoader& loader, const ScenarioOverrides& overrides) {
+  return load_text(yaml, origin, std::filesystem::current_path(), overrides, loader);
+}
+
+std::string resolved_yaml(const Scenario& scenario) {
+  YAML::Emitter out;
+  out << scenario.resolved;
+  return std::string(out.c_str()) + "\n";
+}
+
+std::vector<ScenarioKeyInfo> scenario_key_reference() {
+  std::vector<ScenarioKeyInfo> rows;
+  describe_keys(scenario_schema(), "", &rows);
+  return rows;
+}
+
+}  // namespace swarmnet

@@ -1,0 +1,207 @@
+#include "scenario/scenario_schema.hpp"
+
+#include <algorithm>
+
+namespace swarmnet {
+
+namespace {
+
+KeySpec scalar_key(std::string name, ScalarType type, std::string unit, std::string help) {
+  KeySpec spec;
+  spec.name = std::move(name);
+  spec.rule.type = type;
+  spec.rule.unit = std::move(unit);
+  spec.help = std::move(help);
+  return spec;
+}
+
+KeySpec container_key(std::string name, KeyForm form, std::string help,
+                      std::vector<KeySpec> keys = {}) {
+  KeySpec spec;
+  spec.name = std::move(name);
+  spec.form = form;
+  spec.help = std::move(help);
+  spec.keys = std::move(keys);
+  return spec;
+}
+
+// An axis-aligned rectangle in arena coordinates.
+std::vector<KeySpec> rect_keys(const std::string& what) {
+  return {
+      real_key("x_min_m", "m", "Left edge of the " + what + ".").need(),
+      real_key("y_min_m", "m", "Bottom edge of the " + what + ".").need(),
+      real_key("x_max_m", "m", "Right edge of the " + what + "; greater than x_min_m.").need(),
+      real_key("y_max_m", "m", "Top edge of the " + what + "; greater than y_min_m.").need(),
+  };
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string text;
+  for (const auto& item : items) {
+    if (!text.empty()) text += ", ";
+    text += item;
+  }
+  return text;
+}
+
+}  // namespace
+
+KeySpec real_key(std::string name, std::string unit, std::string help) {
+  return scalar_key(std::move(name), ScalarType::real, std::move(unit), std::move(help));
+}
+KeySpec integer_key(std::string name, std::string help) {
+  return scalar_key(std::move(name), ScalarType::integer, "", std::move(help));
+}
+KeySpec boolean_key(std::string name, std::string help) {
+  return scalar_key(std::move(name), ScalarType::boolean, "", std::move(help));
+}
+KeySpec text_key(std::string name, std::string help) {
+  return scalar_key(std::move(name), ScalarType::text, "", std::move(help));
+}
+KeySpec name_key(std::string name, std::string help) {
+  return scalar_key(std::move(name), ScalarType::name, "", std::move(help));
+}
+KeySpec choice_key(std::string name, std::vector<std::string> choices, std::string help) {
+  KeySpec spec = scalar_key(std::move(name), ScalarType::choice, "", std::move(help));
+  spec.rule.choices = std::move(choices);
+  return spec;
+}
+KeySpec directory_list_key(std::string name, std::string help) {
+  return container_key(std::move(name), KeyForm::directory_list, std::move(help));
+}
+KeySpec map_key(std::string name, std::string help, std::vector<KeySpec> keys) {
+  return container_key(std::move(name), KeyForm::map, std::move(help), std::move(keys));
+}
+KeySpec map_list_key(std::string name, std::string help, std::vector<KeySpec> keys) {
+  return container_key(std::move(name), KeyForm::map_list, std::move(help), std::move(keys));
+}
+KeySpec plugin_key(std::string name, PluginKind kind, std::string help) {
+  KeySpec spec = container_key(std::move(name), KeyForm::plugin, std::move(help));
+  spec.plugin_kind = kind;
+  return spec;
+}
+KeySpec plugin_list_key(std::string name, PluginKind kind, std::string help) {
+  KeySpec spec = container_key(std::move(name), KeyForm::plugin_list, std::move(help));
+  spec.plugin_kind = kind;
+  return spec;
+}
+
+bool KeySpec::is_required() const {
+  if (required) return true;
+  if (form != KeyForm::map || !computed.empty()) return false;
+  return std::any_of(keys.begin(), keys.end(),
+                     [](const KeySpec& key) { return key.is_required(); });
+}
+
+const KeySpec* KeySpec::find(const std::string& key) const {
+  for (const auto& spec : keys) {
+    if (spec.name == key) return &spec;
+  }
+  return nullptr;
+}
+
+std::vector<std::string> KeySpec::key_names() const {
+  std::vector<std::string> names;
+  for (const auto& spec : keys) names.push_back(spec.name);
+  return names;
+}
+
+std::string KeySpec::describe() const {
+  const std::string kind = to_string(plugin_kind);
+  switch (form) {
+    case KeyForm::scalar:
+      return rule.describe();
+    case KeyForm::directory_list:
+      return "a list of directories";
+    case KeyForm::map:
+      return "a mapping with keys " + join(key_names());
+    case KeyForm::map_list:
+      return std::string(min_items > 0 ? "a non-empty" : "a") + " list of mappings with keys " +
+             join(key_names());
+    case KeyForm::plugin:
+      return "{plugin: NAME, params: {...}} naming a " + kind + " plugin";
+    case KeyForm::plugin_list:
+      return std::string(min_items > 0 ? "a non-empty" : "a") +
+             " list of {plugin: NAME, params: {...}} naming " + kind + " plugins";
+  }
+  return "";
+}
+
+const KeySpec& scenario_schema() {
+  // clang-format off
+  static const KeySpec schema = map_key("", "A SwarmNet scenario.", {
+    name_key("name", "Scenario name; names the default output directory.").need(),
+    integer_key("seed", "Master random seed; every model's random streams derive from it.")
+        .at_least(0).defaults("1"),
+    real_key("duration_s", "s", "Simulated time to run; a whole number of steps.").above(0).need(),
+    real_key("step_s", "s", "Robot step length dt; one batch is exchanged per step.")
+        .above(0).defaults("0.1"),
+    choice_key("sync", {"strict", "pipelined"},
+               "strict: deliveries of step i are read at step i+1, the halves alternate; "
+               "pipelined: read at step i+2, both halves run at once.").defaults("strict"),
+    // Before every plugin key: the checker adds these directories to the plugin search path.
+    directory_list_key("plugin_paths",
+                       "Directories searched for plugins before any other, relative to the "
+                       "scenario file's directory.").defaults("[]"),
+    map_key("arena", "The walled rectangle [0, width_m] x [0, height_m] robots move in.", {
+      real_key("width_m", "m", "Extent along x.").above(0).need(),
+      real_key("height_m", "m", "Extent along y.").above(0).need(),
+      map_list_key("obstacles", "Rectangular obstacles, inside the arena.", rect_keys("obstacle"))
+          .one_line().defaults("[]"),
+    }),
+    map_key("robots", "The swarm: identical differential-drive discs.", {
+      integer_key("count", "Number of robots.").between(1, 100000).need(),
+      real_key("radius_m", "m", "Body radius.").above(0).defaults("0.085"),
+      real_key("axle_m", "m", "Distance between the wheels.").above(0).defaults("0.14"),
+      real_key("max_speed_mps", "m/s", "Largest wheel speed; commands are clamped to it.")
+          .above(0).defaults("1.0"),
+      map_key("placement", "Where robots start.", {
+        map_key("region", "Rectangle robots start in, uniformly at random without overlap.",
+                rect_keys("placement region")).one_line().derived("the whole arena"),
+      }),
+      map_key("proximity", "The proximity sensor ring.", {
+        integer_key("rays", "Number of rays, evenly spaced around the body.")
+            .between(0, 360).defaults("24"),
+        real_key("range_m", "m", "Distance beyond which a ray sees nothing.")
+            .above(0).defaults("0.3"),
+      }),
+      plugin_list_key("controllers", PluginKind::controller,
+                      "Controllers every robot runs, in this order, on every step.")
+          .at_least_items(1).need(),
+    }),
+    plugin_key("physics", PluginKind::physics, "Moves the bodies and resolves collisions.")
+        .plugin_default("kinematic2d"),
+    map_key("network", "The network half: one node per robot.", {
+      plugin_list_key("propagation", PluginKind::propagation,
+                      "Propagation models, chained in this order (e.g. path loss, then fading).")
+          .at_least_items(1).need(),
+      map_key("phy", "The radio every node has.", {
+        real_key("tx_power_dbm", "dBm", "Transmit power (16.0206 dBm = 40 mW).")
+            .between(-100, 100).defaults("16.0206"),
+        real_key("rx_sensitivity_dbm", "dBm", "Frames received weaker than this are not decoded.")
+            .between(-200, 100).defaults("-96"),
+      }),
+      map_key("channel", "The shared medium.", {
+        boolean_key("cutoff", "Visit only nodes that could possibly hear a frame (exact; turn off "
+                              "to check).").defaults("true"),
+      }),
+      plugin_key("mac", PluginKind::mac, "Medium access control.").plugin_default("ideal_mac"),
+      plugin_key("routing", PluginKind::routing, "Routing protocol.").need(),
+    }),
+    map_key("output", "What a run writes, and where.", {
+      text_key("dir", "Run directory; relative to the current working directory. --out wins.")
+          .derived("runs/<name>-seed<seed>"),
+      boolean_key("packet_trace", "Write packet events (send, forward, drop, deliver).")
+          .defaults("true"),
+      boolean_key("mobility_trace", "Write the ns-2 mobility trace.").defaults("true"),
+      real_key("mobility_interval_s", "s", "Mobility trace sampling interval; 0 = every step.")
+          .at_least(0).defaults("0"),
+      boolean_key("traffic_schedule", "Write the traffic schedule (for replay).")
+          .defaults("true"),
+    }),
+  });
+  // clang-format on
+  return schema;
+}
+
+}  // namespace swarmnet
