@@ -99,10 +99,10 @@ PluginDescriptor make_descriptor() {
 
 // Registers PluginClass as this library's plugin. Use once per library, at namespace scope.
 #define SWARMNET_PLUGIN(PluginClass)                                                       \
-  extern "C" __attribute__((visibility("default"))) const ::SwarmnetPluginEntry*           \
+  extern "C" __attribute__((visibility("default"))) const ::swarmnet::SwarmnetPluginEntry* \
   swarmnet_plugin_entry() {                                                                \
     static const ::swarmnet::PluginDescriptor descriptor =                                 \
         ::swarmnet::make_descriptor<PluginClass>();                                        \
-    static const ::SwarmnetPluginEntry entry{::swarmnet::kAbiVersion, &descriptor};        \
+    static const ::swarmnet::SwarmnetPluginEntry entry{::swarmnet::kAbiVersion, &descriptor}; \
     return &entry;                                                                         \
   }

@@ -1,0 +1,59 @@
+#include "robot/robot_context.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace swarmnet {
+
+namespace {
+
+double clamp_speed(double speed_mps, double max_mps) {
+  if (std::isnan(speed_mps)) return 0.0;
+  return std::clamp(speed_mps, -max_mps, max_mps);
+}
+
+}  // namespace
+
+std::span<const double> WorldRobotContext::proximity() const {
+  const std::size_t rays = state_->rays_per_robot;
+  return {state_->proximity.data() + static_cast<std::size_t>(id_) * rays, rays};
+}
+
+void WorldRobotContext::set_wheel_speeds(double left_mps, double right_mps) {
+  RobotBody& body = state_->bodies[id_];
+  body.left_mps = clamp_speed(left_mps, body.max_speed_mps);
+  body.right_mps = clamp_speed(right_mps, body.max_speed_mps);
+}
+
+std::uint64_t WorldRobotContext::send(RobotId destination, std::span<const std::byte> payload) {
+  if (payload.size() > kMaxPayloadBytes) {
+    throw std::invalid_argument("robot " + std::to_string(id_) + ": cannot send a payload of " +
+                                std::to_string(payload.size()) + " bytes; the limit is " +
+                                std::to_string(kMaxPayloadBytes) + " bytes (kMaxPayloadBytes)");
+  }
+  if (destination != kBroadcast && destination >= state_->bodies.size()) {
+    throw std::invalid_argument("robot " + std::to_string(id_) + ": cannot send to " +
+                                std::to_string(destination) + ": there are " +
+                                std::to_string(state_->bodies.size()) +
+                                " robots, and it is not kBroadcast either");
+  }
+  if (state_->outbox == nullptr) {
+    throw std::logic_error("robot " + std::to_string(id_) +
+                           ": send() called outside init() and control_step()");
+  }
+  const std::uint64_t message_id = state_->next_message_id++;
+  state_->outbox->push_back(
+      AppMessage{message_id, id_, destination, Payload(payload.begin(), payload.end())});
+  return message_id;
+}
+
+void WorldRobotContext::record(std::string_view metric, double value) {
+  auto it = state_->metrics.find(metric);
+  if (it == state_->metrics.end())
+    it = state_->metrics.emplace(std::string(metric), MetricSummary{}).first;
+  it->second.add(value);
+}
+
+}  // namespace swarmnet

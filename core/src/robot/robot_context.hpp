@@ -1,0 +1,73 @@
+// The robot half's state that controllers reach through RobotContext, and the context itself.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "robot/controller_metrics.hpp"
+#include "step_data.hpp"
+#include "swarmnet/controller.hpp"
+#include "swarmnet/robot_body.hpp"
+
+namespace swarmnet {
+
+// Messages delivered to one robot in the current step. Slots are reused from step to step
+// (payload buffers keep their capacity), so filling an inbox does not allocate once warmed up.
+struct Inbox {
+  std::vector<ReceivedMessage> slots;
+  std::size_t size = 0;
+
+  [[nodiscard]] std::span<const ReceivedMessage> messages() const { return {slots.data(), size}; }
+};
+
+// Everything the contexts of one RobotWorld share. Owned by the world.
+struct RobotWorldState {
+  std::vector<RobotBody> bodies;
+  std::size_t rays_per_robot = 0;
+  double proximity_range_m = 0.0;
+  std::vector<double> proximity;  // rays_per_robot readings per robot, robot after robot
+  std::vector<Inbox> inboxes;
+  SimTime now{};
+  double step_s = 0.0;
+  std::uint64_t next_message_id = 0;
+  std::vector<AppMessage>* outbox = nullptr;  // where send() appends
+  ControllerMetrics metrics;
+};
+
+// The sensors and actuators of one robot.
+class WorldRobotContext final : public RobotContext {
+ public:
+  WorldRobotContext(RobotWorldState& state, RobotId id) : state_(&state), id_(id) {}
+
+  [[nodiscard]] RobotId id() const override { return id_; }
+  [[nodiscard]] std::size_t robot_count() const override { return state_->bodies.size(); }
+  [[nodiscard]] SimTime now() const override { return state_->now; }
+  [[nodiscard]] double step_s() const override { return state_->step_s; }
+  [[nodiscard]] Vec2 position() const override { return body().position; }
+  [[nodiscard]] double heading_rad() const override { return body().heading_rad; }
+  [[nodiscard]] double max_speed_mps() const override { return body().max_speed_mps; }
+  [[nodiscard]] std::span<const double> proximity() const override;
+  [[nodiscard]] double proximity_range_m() const override { return state_->proximity_range_m; }
+  [[nodiscard]] std::span<const ReceivedMessage> inbox() const override {
+    return state_->inboxes[id_].messages();
+  }
+
+  // Clamps each speed to +/- max_speed_mps; a NaN speed counts as 0 (stopping is the safe
+  // reading of a broken command, and a NaN would poison the physics).
+  void set_wheel_speeds(double left_mps, double right_mps) override;
+  // Throws std::invalid_argument for a payload over kMaxPayloadBytes or a destination that is
+  // neither a robot id nor kBroadcast.
+  std::uint64_t send(RobotId destination, std::span<const std::byte> payload) override;
+  void record(std::string_view metric, double value) override;
+
+ private:
+  [[nodiscard]] const RobotBody& body() const { return state_->bodies[id_]; }
+
+  RobotWorldState* state_;
+  RobotId id_;
+};
+
+}  // namespace swarmnet

@@ -1,0 +1,139 @@
+#include "robot/robot_world.hpp"
+
+#include <iterator>
+#include <stdexcept>
+#include <string>
+
+#include "robot/robot_placement.hpp"
+#include "swarmnet/random.hpp"
+
+namespace swarmnet {
+
+namespace {
+
+// Points the contexts' send() at `messages` while controllers run, and nowhere afterwards, even
+// when a controller throws.
+class OutboxScope {
+ public:
+  OutboxScope(RobotWorldState& state, std::vector<AppMessage>& messages) : state_(state) {
+    state_.outbox = &messages;
+  }
+  OutboxScope(const OutboxScope&) = delete;
+  OutboxScope& operator=(const OutboxScope&) = delete;
+  ~OutboxScope() { state_.outbox = nullptr; }
+
+ private:
+  RobotWorldState& state_;
+};
+
+}  // namespace
+
+RobotWorld::RobotWorld(const Scenario& scenario, PluginLoader& loader) {
+  const RobotsConfig& robots = scenario.robots;
+  if (!(scenario.step_s > 0.0)) {
+    throw std::invalid_argument("step_s must be positive, not " + std::to_string(scenario.step_s));
+  }
+  state_.step_s = scenario.step_s;
+  step_length_ = from_seconds(scenario.step_s);
+
+  RobotBody prototype;
+  prototype.radius_m = robots.radius_m;
+  prototype.axle_m = robots.axle_m;
+  prototype.max_speed_mps = robots.max_speed_mps;
+  state_.bodies = place_robots(scenario.arena, robots.placement, robots.count, prototype,
+                               derive_seed(scenario.seed, {hash_name("placement")}));
+
+  const std::size_t count = state_.bodies.size();
+  state_.rays_per_robot = robots.proximity.rays;
+  state_.proximity_range_m = robots.proximity.range_m;
+  state_.proximity.assign(count * state_.rays_per_robot, robots.proximity.range_m);
+  state_.inboxes.resize(count);
+
+  PluginArgs physics_args;
+  physics_args.params = scenario.physics.params;
+  physics_args.seed = derive_seed(scenario.seed, {hash_name("physics")});
+  physics_args.shared_seed = physics_args.seed;
+  physics_ = loader.create<Physics>(scenario.physics.name, physics_args);
+  physics_->setup(scenario.arena, state_.bodies);
+
+  controllers_per_robot_ = robots.controllers.size();
+  controllers_.reserve(count * controllers_per_robot_);
+  contexts_.reserve(count);
+  for (std::size_t r = 0; r < count; ++r) {
+    contexts_.emplace_back(state_, static_cast<RobotId>(r));
+    for (std::size_t c = 0; c < controllers_per_robot_; ++c) {
+      const PluginChoice& choice = robots.controllers[c];
+      PluginArgs args;
+      args.params = choice.params;
+      args.seed = derive_seed(scenario.seed, {hash_name("controller"), c, r});
+      args.shared_seed = derive_seed(scenario.seed, {hash_name("controller"), c});
+      args.instance = static_cast<std::uint32_t>(r);
+      args.instance_count = static_cast<std::uint32_t>(count);
+      controllers_.push_back(loader.create<Controller>(choice.name, args));
+    }
+  }
+
+  sense();
+  state_.now = kTimeZero;
+  const OutboxScope outbox(state_, sent_in_init_);
+  for (std::size_t r = 0; r < count; ++r) {
+    for (std::size_t c = 0; c < controllers_per_robot_; ++c) {
+      controllers_[r * controllers_per_robot_ + c]->init(contexts_[r]);
+    }
+  }
+}
+
+std::span<const double> RobotWorld::proximity(RobotId robot) const {
+  return {state_.proximity.data() + static_cast<std::size_t>(robot) * state_.rays_per_robot,
+          state_.rays_per_robot};
+}
+
+void RobotWorld::fill_inboxes(std::span<const Delivery> deliveries) {
+  for (Inbox& inbox : state_.inboxes) inbox.size = 0;
+  for (const Delivery& delivery : deliveries) {
+    if (delivery.receiver >= state_.inboxes.size()) continue;
+    Inbox& inbox = state_.inboxes[delivery.receiver];
+    if (inbox.size == inbox.slots.size()) inbox.slots.emplace_back();
+    ReceivedMessage& message = inbox.slots[inbox.size++];
+    message.message_id = delivery.message_id;
+    message.source = delivery.source;
+    message.destination = delivery.destination;
+    message.sent_at = delivery.sent_at;
+    message.delivered_at = delivery.delivered_at;
+    message.hops = delivery.hops;
+    // assign() reuses the slot's buffer: no allocation unless this payload is the largest yet.
+    message.payload.assign(delivery.payload.begin(), delivery.payload.end());
+  }
+}
+
+void RobotWorld::sense() {
+  const std::size_t rays = state_.rays_per_robot;
+  if (rays == 0) return;
+  for (std::size_t r = 0; r < state_.bodies.size(); ++r) {
+    physics_->sense_proximity(state_.bodies, r, state_.proximity_range_m,
+                              std::span<double>(state_.proximity.data() + r * rays, rays));
+  }
+}
+
+void RobotWorld::step(std::span<const Delivery> deliveries, std::vector<AppMessage>& sent) {
+  fill_inboxes(deliveries);
+  if (!sent_in_init_.empty()) {
+    sent.insert(sent.end(), std::make_move_iterator(sent_in_init_.begin()),
+                std::make_move_iterator(sent_in_init_.end()));
+    sent_in_init_.clear();
+  }
+  state_.now = now();
+  {
+    const OutboxScope outbox(state_, sent);
+    for (std::size_t r = 0; r < contexts_.size(); ++r) {
+      for (std::size_t c = 0; c < controllers_per_robot_; ++c) {
+        controllers_[r * controllers_per_robot_ + c]->control_step(contexts_[r]);
+      }
+    }
+  }
+  physics_->step(state_.step_s, state_.bodies);
+  sense();
+  ++step_index_;
+}
+
+}  // namespace swarmnet

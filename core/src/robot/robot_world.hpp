@@ -1,0 +1,73 @@
+// The robot half: bodies, their controllers and the physics engine, advanced one step at a time.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "plugin/plugin_instance.hpp"
+#include "plugin/plugin_loader.hpp"
+#include "robot/controller_metrics.hpp"
+#include "robot/robot_context.hpp"
+#include "scenario/scenario.hpp"
+#include "step_data.hpp"
+#include "swarmnet/controller.hpp"
+#include "swarmnet/physics.hpp"
+
+namespace swarmnet {
+
+class RobotWorld {
+ public:
+  // Places the robots (robot_placement.hpp), creates the physics engine and one instance of each
+  // controller entry per robot, sets up the physics, senses, and calls every controller's init()
+  // (robots in ascending id, each robot's controllers in scenario order) at time 0. Messages sent
+  // from init() go out with the first step. Throws what placement, the loader, the physics'
+  // setup() or a controller's init() throws.
+  //
+  // Streams: placement derive_seed(seed, {hash_name("placement")}); physics seed and shared seed
+  // derive_seed(seed, {hash_name("physics")}); controller entry c on robot r
+  // derive_seed(seed, {hash_name("controller"), c, r}), shared derive_seed(seed, {.., c}).
+  RobotWorld(const Scenario& scenario, PluginLoader& loader);
+
+  RobotWorld(const RobotWorld&) = delete;
+  RobotWorld& operator=(const RobotWorld&) = delete;
+  RobotWorld(RobotWorld&&) = delete;
+  RobotWorld& operator=(RobotWorld&&) = delete;
+  ~RobotWorld() = default;
+
+  [[nodiscard]] std::size_t robot_count() const { return state_.bodies.size(); }
+  // Steps completed so far; the next step covers [now(), now() + step length).
+  [[nodiscard]] std::uint64_t step_index() const { return step_index_; }
+  [[nodiscard]] SimTime now() const {
+    return step_length_ * static_cast<std::int64_t>(step_index_);
+  }
+  [[nodiscard]] double step_s() const { return state_.step_s; }
+  [[nodiscard]] std::span<const RobotBody> bodies() const { return state_.bodies; }
+  // The proximity readings robot `robot`'s controllers see on the next step.
+  [[nodiscard]] std::span<const double> proximity(RobotId robot) const;
+
+  // Runs one step at now(): puts `deliveries` into the receivers' inboxes (keeping their order;
+  // a receiver that is not a robot is ignored), runs every robot's controllers (robots in
+  // ascending id, controllers in scenario order), steps the physics by step_s(), senses the
+  // proximity rings for the next step, and advances time. Appends the messages sent during the
+  // step to `sent`, ids ascending from a world-wide counter starting at 0.
+  void step(std::span<const Delivery> deliveries, std::vector<AppMessage>& sent);
+
+  [[nodiscard]] const ControllerMetrics& controller_metrics() const { return state_.metrics; }
+
+ private:
+  void fill_inboxes(std::span<const Delivery> deliveries);
+  void sense();
+
+  RobotWorldState state_;
+  SimTime step_length_{};
+  std::uint64_t step_index_ = 0;
+  PluginInstance<Physics> physics_;
+  std::size_t controllers_per_robot_ = 0;
+  std::vector<PluginInstance<Controller>> controllers_;  // robot r's entry c at r * per_robot + c
+  std::vector<WorldRobotContext> contexts_;
+  std::vector<AppMessage> sent_in_init_;
+};
+
+}  // namespace swarmnet

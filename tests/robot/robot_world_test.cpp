@@ -1,0 +1,213 @@
+// RobotWorld: construction, stepping, message ids, robot contexts and determinism.
+#include "robot/robot_world.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "robot/robot_context.hpp"
+#include "robot_test_support.hpp"
+
+namespace swarmnet {
+namespace {
+
+using test::make_choice;
+using test::make_scenario;
+
+class RobotWorldTest : public ::testing::Test {
+ protected:
+  // 200 robots diffusing around an obstacle while a quarter of them send CBR traffic.
+  Scenario busy_scenario(std::uint64_t seed) {
+    Scenario scenario = make_scenario(loader_, 200, 15.0, 15.0, seed);
+    scenario.arena.obstacles.push_back(Rect{6.0, 6.0, 9.0, 7.0});
+    scenario.robots.controllers.push_back(
+        make_choice(loader_, "diffusion", PluginKind::controller, {{"turn_interval_s", 3.0}}));
+    scenario.robots.controllers.push_back(make_choice(loader_, "cbr", PluginKind::controller,
+                                                      {{"fraction", 0.25}, {"start_s", 0.5}}));
+    return scenario;
+  }
+
+  PluginLoader loader_;
+};
+
+// Same bits in every pose and wheel field (not merely equal values: -0.0 != 0.0 here).
+bool bitwise_equal(std::span<const RobotBody> a, std::span<const RobotBody> b) {
+  if (a.size() != b.size()) return false;
+  const auto bits = [](const RobotBody& body) {
+    return std::array<std::uint64_t, 5>{std::bit_cast<std::uint64_t>(body.position.x()),
+                                        std::bit_cast<std::uint64_t>(body.position.y()),
+                                        std::bit_cast<std::uint64_t>(body.heading_rad),
+                                        std::bit_cast<std::uint64_t>(body.left_mps),
+                                        std::bit_cast<std::uint64_t>(body.right_mps)};
+  };
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (bits(a[i]) != bits(b[i])) return false;
+  }
+  return true;
+}
+
+TEST_F(RobotWorldTest, SameScenarioGivesBitwiseIdenticalRuns) {
+  RobotWorld first(busy_scenario(21), loader_);
+  RobotWorld second(busy_scenario(21), loader_);
+  RobotWorld other(busy_scenario(22), loader_);
+  ASSERT_TRUE(bitwise_equal(first.bodies(), second.bodies()));
+  std::vector<AppMessage> sent_first;
+  std::vector<AppMessage> sent_second;
+  std::vector<AppMessage> sent_other;
+  for (int i = 0; i < 500; ++i) {
+    first.step({}, sent_first);
+    second.step({}, sent_second);
+    other.step({}, sent_other);
+  }
+  EXPECT_TRUE(bitwise_equal(first.bodies(), second.bodies()));
+  EXPECT_FALSE(bitwise_equal(first.bodies(), other.bodies()));
+  ASSERT_EQ(sent_first.size(), sent_second.size());
+  for (std::size_t i = 0; i < sent_first.size(); ++i) {
+    EXPECT_EQ(sent_first[i].message_id, sent_second[i].message_id);
+    EXPECT_EQ(sent_first[i].source, sent_second[i].source);
+    EXPECT_EQ(sent_first[i].destination, sent_second[i].destination);
+    EXPECT_EQ(sent_first[i].payload, sent_second[i].payload);
+  }
+  // The robots did move.
+  RobotWorld fresh(busy_scenario(21), loader_);
+  EXPECT_FALSE(bitwise_equal(first.bodies(), fresh.bodies()));
+}
+
+TEST_F(RobotWorldTest, TimeAdvancesByWholeSteps) {
+  Scenario scenario = make_scenario(loader_, 3, 10.0, 10.0);
+  scenario.step_s = 0.05;
+  RobotWorld world(scenario, loader_);
+  EXPECT_EQ(world.robot_count(), 3U);
+  EXPECT_EQ(world.now(), kTimeZero);
+  std::vector<AppMessage> sent;
+  for (int i = 0; i < 1000; ++i) world.step({}, sent);
+  EXPECT_EQ(world.step_index(), 1000U);
+  EXPECT_EQ(world.now(), SimTime{50'000'000'000});
+  EXPECT_TRUE(sent.empty());
+}
+
+TEST_F(RobotWorldTest, MessageIdsAscendFromZeroAcrossSteps) {
+  RobotWorld world(busy_scenario(3), loader_);
+  std::vector<AppMessage> sent;
+  std::vector<AppMessage> all;
+  for (int i = 0; i < 50; ++i) {
+    sent.clear();
+    world.step({}, sent);
+    // Within a step, robots run in ascending id.
+    for (std::size_t k = 1; k < sent.size(); ++k) EXPECT_LE(sent[k - 1].source, sent[k].source);
+    all.insert(all.end(), sent.begin(), sent.end());
+  }
+  ASSERT_FALSE(all.empty());
+  for (std::size_t k = 0; k < all.size(); ++k) EXPECT_EQ(all[k].message_id, k);
+}
+
+TEST_F(RobotWorldTest, ControllersSeeProximityAndPlacementIsValid) {
+  Scenario scenario = make_scenario(loader_, 40, 6.0, 6.0);
+  RobotWorld world(scenario, loader_);
+  for (std::uint32_t r = 0; r < world.robot_count(); ++r) {
+    ASSERT_EQ(world.proximity(r).size(), 24U);
+    for (double reading : world.proximity(r)) {
+      EXPECT_GE(reading, 0.0);
+      EXPECT_LE(reading, scenario.robots.proximity.range_m);
+    }
+  }
+  const auto bodies = world.bodies();
+  for (const auto& body : bodies) {
+    EXPECT_EQ(body.radius_m, scenario.robots.radius_m);
+    EXPECT_EQ(body.axle_m, scenario.robots.axle_m);
+    EXPECT_EQ(body.max_speed_mps, scenario.robots.max_speed_mps);
+  }
+}
+
+TEST_F(RobotWorldTest, PlacementFailureNamesTheCounts) {
+  Scenario scenario = make_scenario(loader_, 500, 2.0, 2.0);
+  try {
+    RobotWorld world(scenario, loader_);
+    FAIL() << "500 robots fit in 4 m^2";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("of 500 robots"), std::string::npos);
+  }
+}
+
+class RobotContextTest : public ::testing::Test {
+ protected:
+  RobotContextTest() {
+    state_.bodies.resize(3);
+    for (auto& body : state_.bodies) body.max_speed_mps = 0.5;
+    state_.inboxes.resize(3);
+    state_.rays_per_robot = 2;
+    state_.proximity = {1, 2, 3, 4, 5, 6};
+    state_.outbox = &outbox_;
+  }
+  RobotWorldState state_;
+  std::vector<AppMessage> outbox_;
+};
+
+TEST_F(RobotContextTest, WheelSpeedsAreClamped) {
+  WorldRobotContext robot(state_, 1);
+  robot.set_wheel_speeds(2.0, -3.0);
+  EXPECT_EQ(state_.bodies[1].left_mps, 0.5);
+  EXPECT_EQ(state_.bodies[1].right_mps, -0.5);
+  robot.set_wheel_speeds(0.25, std::nan(""));
+  EXPECT_EQ(state_.bodies[1].left_mps, 0.25);
+  EXPECT_EQ(state_.bodies[1].right_mps, 0.0);
+  EXPECT_EQ(state_.bodies[0].left_mps, 0.0);  // other robots untouched
+}
+
+TEST_F(RobotContextTest, ProximityIsTheRobotsOwnSlice) {
+  WorldRobotContext robot(state_, 2);
+  ASSERT_EQ(robot.proximity().size(), 2U);
+  EXPECT_EQ(robot.proximity()[0], 5);
+  EXPECT_EQ(robot.proximity()[1], 6);
+}
+
+TEST_F(RobotContextTest, SendStampsIdsAndRefusesBadMessages) {
+  WorldRobotContext robot(state_, 1);
+  std::vector<std::byte> payload(kMaxPayloadBytes, std::byte{7});
+  EXPECT_EQ(robot.send(2, payload), 0U);
+  EXPECT_EQ(robot.send(kBroadcast, payload), 1U);
+  ASSERT_EQ(outbox_.size(), 2U);
+  EXPECT_EQ(outbox_[0].source, 1U);
+  EXPECT_EQ(outbox_[0].destination, 2U);
+  EXPECT_EQ(outbox_[1].destination, kBroadcast);
+  EXPECT_EQ(outbox_[1].payload, payload);
+
+  payload.push_back(std::byte{0});
+  try {
+    robot.send(2, payload);
+    FAIL();
+  } catch (const std::invalid_argument& error) {
+    const std::string text = error.what();
+    EXPECT_NE(text.find(std::to_string(kMaxPayloadBytes + 1)), std::string::npos) << text;
+    EXPECT_NE(text.find(std::to_string(kMaxPayloadBytes)), std::string::npos) << text;
+  }
+  EXPECT_THROW(robot.send(3, {}), std::invalid_argument);
+  EXPECT_THROW(robot.send(kNoNode, {}), std::invalid_argument);
+  EXPECT_EQ(outbox_.size(), 2U);
+  EXPECT_EQ(state_.next_message_id, 2U);
+}
+
+TEST_F(RobotContextTest, RecordSummarisesPerMetric) {
+  WorldRobotContext a(state_, 0);
+  WorldRobotContext b(state_, 1);
+  a.record("delay", 2.0);
+  b.record("delay", -1.0);
+  b.record("delay", 5.0);
+  a.record("count", 1.0);
+  ASSERT_EQ(state_.metrics.size(), 2U);
+  const MetricSummary& delay = state_.metrics.find("delay")->second;
+  EXPECT_EQ(delay.count, 3U);
+  EXPECT_EQ(delay.sum, 6.0);
+  EXPECT_EQ(delay.min, -1.0);
+  EXPECT_EQ(delay.max, 5.0);
+  EXPECT_EQ(delay.mean(), 2.0);
+  EXPECT_EQ(state_.metrics.begin()->first, "count");  // name order
+}
+
+}  // namespace
+}  // namespace swarmnet
