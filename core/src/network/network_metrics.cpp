@@ -1,0 +1,144 @@
+#include "network/network_metrics.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace swarmnet {
+
+namespace {
+
+constexpr std::array kDropReasons = {DropReason::no_route, DropReason::queue_full,
+                                     DropReason::ttl_expired, DropReason::retry_limit,
+                                     DropReason::buffer_timeout};
+
+constexpr std::array<const char*, 4> kMacKeys = {"tx_frames", "tx_bytes", "collisions", "retries"};
+constexpr std::array<const char*, 3> kRoutingKeys = {"control_packets", "control_bytes",
+                                                     "data_forwards"};
+
+// Nearest-rank percentile of sorted, non-empty samples: the ceil(percent / 100 * n)-th smallest,
+// in integer arithmetic so that no rounding moves the rank.
+std::int64_t nearest_rank(const std::vector<std::int64_t>& sorted, std::size_t percent) {
+  std::size_t rank = (percent * sorted.size() + 99) / 100;
+  rank = std::clamp<std::size_t>(rank, 1, sorted.size());
+  return sorted[rank - 1];
+}
+
+template <std::size_t N>
+void emit_counters(nlohmann::ordered_json& out, const std::array<const char*, N>& first,
+                   const std::map<std::string, std::uint64_t, std::less<>>& counters) {
+  for (const char* key : first) {
+    const auto it = counters.find(std::string_view(key));
+    out[key] = it == counters.end() ? 0 : it->second;
+  }
+  for (const auto& entry : counters) {
+    const bool listed = std::any_of(first.begin(), first.end(),
+                                    [&entry](const char* k) { return entry.first == k; });
+    if (!listed) out[entry.first] = entry.second;
+  }
+}
+
+}  // namespace
+
+NetworkMetrics::NetworkMetrics() {
+  for (const char* key : kMacKeys) mac_[key] = 0;
+  routing_["control_packets"] = 0;
+  routing_["control_bytes"] = 0;
+}
+
+void NetworkMetrics::message_sent(bool broadcast) {
+  ++sent_;
+  if (broadcast) ++broadcast_sent_;
+}
+
+void NetworkMetrics::unicast_delivered(SimTime delay, std::uint32_t hops) {
+  delays_ns_.push_back(delay.count());
+  hops_total_ += hops;
+}
+
+void NetworkMetrics::dropped(DropReason reason) { ++drops_[reason]; }
+
+std::uint64_t NetworkMetrics::drops(DropReason reason) const {
+  const auto it = drops_.find(reason);
+  return it == drops_.end() ? 0 : it->second;
+}
+
+void NetworkMetrics::frame_transmitted(std::uint32_t bytes) {
+  ++mac_["tx_frames"];
+  mac_["tx_bytes"] += bytes;
+}
+
+void NetworkMetrics::control_packet_sent(std::uint32_t bytes) {
+  ++routing_["control_packets"];
+  routing_["control_bytes"] += bytes;
+}
+
+void NetworkMetrics::mac_count(std::string_view counter, std::uint64_t amount) {
+  add(mac_, counter, amount);
+}
+
+void NetworkMetrics::routing_count(std::string_view counter, std::uint64_t amount) {
+  add(routing_, counter, amount);
+}
+
+void NetworkMetrics::add(CounterMap& counters, std::string_view counter, std::uint64_t amount) {
+  if (auto it = counters.find(counter); it != counters.end()) {
+    it->second += amount;
+  } else {
+    counters.emplace(std::string(counter), amount);
+  }
+}
+
+nlohmann::ordered_json NetworkMetrics::report(std::uint64_t in_flight, std::uint64_t events) const {
+  using Json = nlohmann::ordered_json;
+  Json out;
+  Json packets;
+  packets["sent"] = sent_;
+  packets["delivered"] = delivered();
+  Json dropped = Json::object();
+  for (const DropReason reason : kDropReasons) dropped[to_string(reason)] = drops(reason);
+  packets["dropped"] = dropped;
+  packets["broadcast_sent"] = broadcast_sent_;
+  packets["broadcast_deliveries"] = broadcast_deliveries_;
+  packets["in_flight"] = in_flight;
+  packets["duplicates"] = duplicates_;
+  out["packets"] = packets;
+
+  const std::uint64_t unicast = unicast_sent();
+  out["pdr"] = unicast == 0 ? 0.0 : static_cast<double>(delivered()) / static_cast<double>(unicast);
+
+  Json delay;
+  if (delays_ns_.empty()) {
+    delay["mean"] = nullptr;
+    delay["p50"] = nullptr;
+    delay["p95"] = nullptr;
+    out["delay_s"] = delay;
+    out["hops_mean"] = nullptr;
+  } else {
+    std::vector<std::int64_t> sorted = delays_ns_;
+    std::sort(sorted.begin(), sorted.end());
+    // Integer sum (exact), then one division: the mean does not depend on summation order.
+    std::int64_t total_ns = 0;
+    for (const std::int64_t d : sorted) total_ns += d;
+    const auto n = static_cast<double>(sorted.size());
+    delay["mean"] = static_cast<double>(total_ns) * 1e-9 / n;
+    delay["p50"] = to_seconds(SimTime{nearest_rank(sorted, 50)});
+    delay["p95"] = to_seconds(SimTime{nearest_rank(sorted, 95)});
+    out["delay_s"] = delay;
+    out["hops_mean"] = static_cast<double>(hops_total_) / n;
+  }
+
+  Json mac = Json::object();
+  emit_counters(mac, kMacKeys, mac_);
+  out["mac"] = mac;
+
+  CounterMap routing = routing_;
+  routing["data_forwards"] += data_forwards_;
+  Json routing_json = Json::object();
+  emit_counters(routing_json, kRoutingKeys, routing);
+  out["routing"] = routing_json;
+  out["events"] = events;
+  return out;
+}
+
+}  // namespace swarmnet

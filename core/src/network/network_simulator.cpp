@@ -1,0 +1,119 @@
+#include "network/network_simulator.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "swarmnet/random.hpp"
+
+namespace swarmnet {
+
+namespace {
+
+PluginArgs node_plugin_args(const Scenario& scenario, const PluginChoice& choice, NodeId node) {
+  PluginArgs args;
+  args.params = choice.params;
+  const std::uint64_t kind = hash_name(to_string(choice.kind));
+  const std::uint64_t name = hash_name(choice.name.c_str());
+  args.seed = derive_seed(scenario.seed, {kind, name, node});
+  args.shared_seed = derive_seed(scenario.seed, {kind, name});
+  args.instance = node;
+  args.instance_count = scenario.robots.count;
+  return args;
+}
+
+SimTime checked_step(const Scenario& scenario) {
+  const SimTime step = from_seconds(scenario.step_s);
+  if (step <= kTimeZero) {
+    throw std::invalid_argument("network: step_s must be at least 1 ns (got " +
+                                std::to_string(scenario.step_s) + ")");
+  }
+  return step;
+}
+
+}  // namespace
+
+NetworkSimulator::NetworkSimulator(const Scenario& scenario, PluginLoader& loader,
+                                   std::ostream* packet_trace)
+    : seed_(scenario.seed),
+      step_(checked_step(scenario)),
+      trace_(packet_trace),
+      channel_(scenario, PropagationChain(scenario, loader), scheduler_, scenario.robots.count),
+      application_(scenario.robots.count, metrics_, trace_, packet_uids_) {
+  const NodeServices services{scheduler_, channel_, application_, trace_, metrics_, packet_uids_};
+  PluginChoice mac = scenario.network.mac;
+  PluginChoice routing = scenario.network.routing;
+  mac.kind = PluginKind::mac;  // the seed keys name the kind, whatever the struct was filled with
+  routing.kind = PluginKind::routing;
+  nodes_.reserve(scenario.robots.count);
+  for (NodeId id = 0; id < scenario.robots.count; ++id) {
+    auto mac_instance = loader.create<Mac>(mac.name, node_plugin_args(scenario, mac, id));
+    auto routing_instance =
+        loader.create<Routing>(routing.name, node_plugin_args(scenario, routing, id));
+    nodes_.push_back(std::make_unique<Node>(id, services, scenario.network.phy,
+                                            std::move(mac_instance), std::move(routing_instance)));
+    channel_.attach(id, nodes_.back()->phy());
+  }
+  for (auto& node : nodes_) node->attach();
+}
+
+NetworkSimulator::~NetworkSimulator() { scheduler_.clear(); }
+
+void NetworkSimulator::check_batch(const StepBatch& batch) const {
+  if (batch.start < scheduler_.now()) {
+    throw std::invalid_argument("network: step " + std::to_string(batch.step) + " starts at " +
+                                std::to_string(batch.start.count()) +
+                                " ns, before the end of the previous window (" +
+                                std::to_string(scheduler_.now().count()) + " ns)");
+  }
+  if (batch.positions.size() != nodes_.size()) {
+    throw std::invalid_argument("network: step " + std::to_string(batch.step) + " has " +
+                                std::to_string(batch.positions.size()) + " positions for " +
+                                std::to_string(nodes_.size()) + " nodes");
+  }
+  for (const AppMessage& message : batch.messages) {
+    const bool bad_destination =
+        message.destination != kBroadcast && message.destination >= nodes_.size();
+    if (message.source >= nodes_.size() || bad_destination) {
+      throw std::invalid_argument("network: message " + std::to_string(message.message_id) +
+                                  " from robot " + std::to_string(message.source) + " to " +
+                                  std::to_string(message.destination) + " names an unknown robot");
+    }
+  }
+}
+
+void NetworkSimulator::run_step(const StepBatch& batch, StepResult& result) {
+  check_batch(batch);
+  result.step = batch.step;
+  result.deliveries.clear();
+  application_.set_output(&result.deliveries);
+  // Detach the result again however the window ends (a plugin's logic error propagates).
+  struct OutputReset {
+    ApplicationLayer& application;
+    ~OutputReset() { application.set_output(nullptr); }
+  } output_reset{application_};
+
+  std::uint64_t events = scheduler_.run_until(batch.start);  // a gap between windows, if any
+  channel_.set_positions(batch.positions);
+  for (const AppMessage& message : batch.messages) {
+    ApplicationLayer::Message pending{message.message_id, message.source, message.destination,
+                                      std::make_shared<const Payload>(message.payload)};
+    Routing& routing = nodes_[message.source]->routing();
+    scheduler_.schedule_at(batch.start + injection_offset(seed_, message.message_id, step_),
+                           [this, pending = std::move(pending), &routing] {
+                             application_.inject(pending, scheduler_.now(), routing);
+                           });
+  }
+  events += scheduler_.run_until(batch.start + step_);
+
+  trace_.flush();
+  result.events = events;
+}
+
+nlohmann::ordered_json NetworkSimulator::report() const {
+  return metrics_.report(application_.undelivered_unicast(), scheduler_.events_run());
+}
+
+void NetworkSimulator::finish() { trace_.finish(); }
+
+}  // namespace swarmnet

@@ -1,0 +1,82 @@
+// The network half (DESIGN.md section 1): one node per robot, discrete events in integer
+// nanoseconds, run one step window at a time by the step protocol (section 2).
+//
+//   scenario ──► NetworkSimulator ── nodes: app ↔ routing ↔ mac ↔ phy ↔ channel ↔ propagation
+//
+// A run is a pure function of the scenario and the batches: every random draw comes from a
+// stream derived with derive_seed from scenario.seed and stable keys, events at one instant run in
+// scheduling order, and nothing that reaches the output or the event order iterates an unordered
+// container.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <vector>
+
+#include "network/application_layer.hpp"
+#include "network/channel.hpp"
+#include "network/network_metrics.hpp"
+#include "network/node.hpp"
+#include "network/packet_trace.hpp"
+#include "network/packet_uid_source.hpp"
+#include "network/scheduler.hpp"
+#include "plugin/plugin_loader.hpp"
+#include "scenario/scenario.hpp"
+#include "step_data.hpp"
+
+namespace swarmnet {
+
+class NetworkSimulator {
+ public:
+  // `packet_trace` may be null (no trace); it must outlive finish(). Creates one node per robot,
+  // one MAC and one routing instance per node, and the propagation chain, then calls attach() on
+  // every node's MAC and routing (node order). Per-node plugin seeds:
+  // derive_seed(scenario.seed, {hash_name(kind), hash_name(plugin name), node}).
+  // Throws PluginError or std::invalid_argument on a bad set-up.
+  NetworkSimulator(const Scenario& scenario, PluginLoader& loader, std::ostream* packet_trace);
+  NetworkSimulator(const NetworkSimulator&) = delete;
+  NetworkSimulator& operator=(const NetworkSimulator&) = delete;
+  NetworkSimulator(NetworkSimulator&&) = delete;
+  NetworkSimulator& operator=(NetworkSimulator&&) = delete;
+  ~NetworkSimulator();
+
+  // Simulates [batch.start, batch.start + step): places the nodes at batch.positions (held over
+  // the window), injects each message at batch.start + injection_offset(seed, message id, step),
+  // runs every event before the window's end and fills `result` (step, deliveries in delivery
+  // order, events run in the window). batch.start must not be before the end of the previous
+  // window; a batch with the wrong number of positions or a message from/to an unknown robot is
+  // refused with std::invalid_argument before anything is simulated.
+  void run_step(const StepBatch& batch, StepResult& result);
+
+  // Metrics so far (keys and definitions: network_metrics.hpp).
+  [[nodiscard]] nlohmann::ordered_json report() const;
+
+  // Flushes the packet trace (there is no footer); call once, at the end.
+  void finish();
+
+  [[nodiscard]] SimTime now() const { return scheduler_.now(); }
+  [[nodiscard]] SimTime step_length() const { return step_; }
+  [[nodiscard]] std::size_t node_count() const { return nodes_.size(); }
+  [[nodiscard]] const Channel& channel() const { return channel_; }
+  [[nodiscard]] const NetworkMetrics& metrics() const { return metrics_; }
+  [[nodiscard]] std::uint64_t events() const { return scheduler_.events_run(); }
+
+ private:
+  void check_batch(const StepBatch& batch) const;
+
+  std::uint64_t seed_;
+  SimTime step_;
+  // Declared first, destroyed last; the destructor clears it before the plugins go, so no
+  // callback made by a plugin's code outlives the plugin's library.
+  Scheduler scheduler_;
+  NetworkMetrics metrics_;
+  PacketTraceWriter trace_;
+  PacketUidSource packet_uids_;
+  Channel channel_;
+  ApplicationLayer application_;
+  std::vector<std::unique_ptr<Node>> nodes_;
+};
+
+}  // namespace swarmnet

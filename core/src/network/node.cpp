@@ -1,0 +1,104 @@
+#include "network/node.hpp"
+
+#include <utility>
+
+namespace swarmnet {
+
+Node::Node(NodeId id, const NodeServices& services, const PhyConfig& phy_config,
+           PluginInstance<Mac> mac, PluginInstance<Routing> routing)
+    : id_(id),
+      services_(services),
+      phy_(phy_config, *this),
+      mac_port_(*this),
+      routing_port_(*this),
+      mac_(std::move(mac)),
+      routing_(std::move(routing)) {}
+
+void Node::attach() {
+  mac_->attach(mac_port_);
+  routing_->attach(routing_port_);
+}
+
+void Node::drop(const Packet& packet, DropReason reason) {
+  services_.metrics.dropped(reason);
+  services_.trace.record(services_.scheduler.now(), PacketEvent::drop, id_, packet,
+                         to_string(reason));
+}
+
+// ---- MacPort ----------------------------------------------------------------------------------
+
+std::size_t Node::MacPort::node_count() const { return node_.services_.channel.node_count(); }
+SimTime Node::MacPort::now() const { return node_.services_.scheduler.now(); }
+Vec2 Node::MacPort::position() const { return node_.services_.channel.position(node_.id_); }
+
+TimerId Node::MacPort::schedule(SimTime delay, std::function<void()> callback) {
+  return node_.services_.scheduler.schedule_in(delay, std::move(callback));
+}
+void Node::MacPort::cancel(TimerId timer) { node_.services_.scheduler.cancel(timer); }
+
+void Node::MacPort::count(std::string_view counter, std::uint64_t amount) {
+  node_.services_.metrics.mac_count(counter, amount);
+}
+
+void Node::MacPort::transmit(Frame frame, SimTime duration) {
+  node_.services_.metrics.frame_transmitted(frame.size_bytes());
+  node_.services_.channel.transmit(node_.id_, std::move(frame), duration);
+}
+
+bool Node::MacPort::medium_busy() const { return node_.phy_.medium_busy(); }
+
+void Node::MacPort::deliver(Packet packet, NodeId from) {
+  ++packet.hops;
+  node_.routing_->receive(std::move(packet), from);
+}
+
+void Node::MacPort::link_failed(const Packet& packet, NodeId next_hop) {
+  node_.routing_->link_failed(packet, next_hop);
+}
+
+void Node::MacPort::drop(const Packet& packet, DropReason reason) { node_.drop(packet, reason); }
+
+// ---- RoutingPort ------------------------------------------------------------------------------
+
+std::size_t Node::RoutingPort::node_count() const { return node_.services_.channel.node_count(); }
+SimTime Node::RoutingPort::now() const { return node_.services_.scheduler.now(); }
+Vec2 Node::RoutingPort::position() const { return node_.services_.channel.position(node_.id_); }
+
+TimerId Node::RoutingPort::schedule(SimTime delay, std::function<void()> callback) {
+  return node_.services_.scheduler.schedule_in(delay, std::move(callback));
+}
+void Node::RoutingPort::cancel(TimerId timer) { node_.services_.scheduler.cancel(timer); }
+
+void Node::RoutingPort::count(std::string_view counter, std::uint64_t amount) {
+  node_.services_.metrics.routing_count(counter, amount);
+}
+
+Packet Node::RoutingPort::make_control_packet(NodeId destination) {
+  Packet packet;
+  packet.uid = node_.services_.packet_uids.take();
+  packet.source = node_.id_;
+  packet.destination = destination;
+  packet.message_id = kNoMessage;
+  packet.sent_at = now();
+  return packet;
+}
+
+void Node::RoutingPort::send_to_mac(Packet packet, NodeId next_hop) {
+  if (packet.is_control()) node_.services_.metrics.control_packet_sent(packet.size_bytes());
+  node_.mac_->enqueue(std::move(packet), next_hop);
+}
+
+void Node::RoutingPort::deliver(const Packet& packet) {
+  node_.services_.application.deliver(node_.id_, packet, now());
+}
+
+void Node::RoutingPort::drop(const Packet& packet, DropReason reason) {
+  node_.drop(packet, reason);
+}
+
+void Node::RoutingPort::trace_forward(const Packet& packet) {
+  if (!packet.is_control()) node_.services_.metrics.data_forwarded();
+  node_.services_.trace.record(now(), PacketEvent::forward, node_.id_, packet);
+}
+
+}  // namespace swarmnet

@@ -1,0 +1,129 @@
+#include "network/scheduler.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace swarmnet {
+
+namespace {
+
+// A TimerId packs the slot (low 32 bits, +1 so that no id is kNoTimer) and the slot's generation
+// (high 32 bits). A generation wraps after 2^32 reuses of one slot; an id kept that long could
+// then match a newer timer, which no protocol timer lives long enough to meet.
+TimerId make_id(std::uint32_t slot, std::uint32_t generation) {
+  return (static_cast<std::uint64_t>(generation) << 32U) | (static_cast<std::uint64_t>(slot) + 1);
+}
+
+}  // namespace
+
+TimerId Scheduler::schedule_at(SimTime time, Callback callback) {
+  if (time < now_) {
+    throw std::logic_error("Scheduler: event scheduled in the past (at " +
+                           std::to_string(time.count()) + " ns, now " +
+                           std::to_string(now_.count()) + " ns)");
+  }
+  if (!callback) throw std::logic_error("Scheduler: empty callback");
+  std::uint32_t slot = 0;
+  if (free_slots_.empty()) {
+    slot = static_cast<std::uint32_t>(slots_.size());
+    slots_.emplace_back();
+  } else {
+    slot = free_slots_.back();
+    free_slots_.pop_back();
+  }
+  Slot& s = slots_[slot];
+  s.callback = std::move(callback);
+  s.armed = true;
+  heap_.push_back(Entry{time, next_sequence_++, slot, s.generation});
+  std::push_heap(heap_.begin(), heap_.end(), Later{});
+  ++live_;
+  return make_id(slot, s.generation);
+}
+
+TimerId Scheduler::schedule_in(SimTime delay, Callback callback) {
+  if (delay < kTimeZero) {
+    throw std::logic_error("Scheduler: negative delay (" + std::to_string(delay.count()) + " ns)");
+  }
+  const SimTime time = delay > kTimeNever - now_ ? kTimeNever : now_ + delay;
+  return schedule_at(time, std::move(callback));
+}
+
+bool Scheduler::pending(TimerId timer) const {
+  if (timer == kNoTimer) return false;
+  const std::uint64_t slot = (timer & 0xffffffffULL) - 1;
+  const auto generation = static_cast<std::uint32_t>(timer >> 32U);
+  return slot < slots_.size() && slots_[slot].armed && slots_[slot].generation == generation;
+}
+
+void Scheduler::cancel(TimerId timer) {
+  if (!pending(timer)) return;
+  release(static_cast<std::uint32_t>((timer & 0xffffffffULL) - 1));
+  ++tombstones_;
+  if (tombstones_ > 64 && tombstones_ * 2 > heap_.size()) compact();
+}
+
+std::uint64_t Scheduler::run_until(SimTime end) {
+  if (end < now_) {
+    throw std::logic_error("Scheduler: run_until(" + std::to_string(end.count()) +
+                           " ns) is before now (" + std::to_string(now_.count()) + " ns)");
+  }
+  std::uint64_t ran = 0;
+  while (!heap_.empty() && heap_.front().time < end) {
+    std::pop_heap(heap_.begin(), heap_.end(), Later{});
+    const Entry entry = heap_.back();
+    heap_.pop_back();
+    if (!is_live(entry)) {
+      --tombstones_;
+      continue;
+    }
+    now_ = entry.time;
+    // Free the slot before running: the callback may schedule (reusing it) or cancel its own id.
+    Callback callback = std::move(slots_[entry.slot].callback);
+    release(entry.slot);
+    ++ran;
+    ++events_run_;
+    callback();
+  }
+  now_ = end;
+  return ran;
+}
+
+void Scheduler::clear() {
+  // Release every slot (bumping generations, so ids issued before stay dead), then destroy the
+  // callbacks: a capture's destructor may call back into cancel(), which is then a no-op.
+  std::vector<Callback> doomed;
+  doomed.reserve(live_);
+  for (std::uint32_t slot = 0; slot < slots_.size(); ++slot) {
+    if (!slots_[slot].armed) continue;
+    doomed.push_back(std::move(slots_[slot].callback));
+    release(slot);
+  }
+  heap_.clear();
+  tombstones_ = 0;
+  doomed.clear();
+}
+
+bool Scheduler::is_live(const Entry& entry) const {
+  const Slot& s = slots_[entry.slot];
+  return s.armed && s.generation == entry.generation;
+}
+
+void Scheduler::release(std::uint32_t slot) {
+  Slot& s = slots_[slot];
+  s.callback = nullptr;
+  s.armed = false;
+  ++s.generation;
+  free_slots_.push_back(slot);
+  --live_;
+}
+
+void Scheduler::compact() {
+  // Keys (time, sequence) are unique, so rebuilding the heap cannot change the order events pop.
+  std::erase_if(heap_, [this](const Entry& entry) { return !is_live(entry); });
+  std::make_heap(heap_.begin(), heap_.end(), Later{});
+  tombstones_ = 0;
+}
+
+}  // namespace swarmnet

@@ -1,0 +1,76 @@
+#include "network/phy.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace swarmnet {
+namespace {
+
+class RecordingListener final : public PhyListener {
+ public:
+  void phy_transmit_end() override { log.emplace_back("tx_end"); }
+  void phy_receive(const Frame& frame, const RxInfo& info) override {
+    log.push_back("rx " + std::to_string(frame.uid));
+    last_power_dbm = info.rx_power_dbm;
+  }
+  void phy_receive_error() override { log.emplace_back("rx_error"); }
+  void phy_medium_busy() override { log.emplace_back("busy"); }
+  void phy_medium_idle() override { log.emplace_back("idle"); }
+
+  std::vector<std::string> log;
+  double last_power_dbm = 0.0;
+};
+
+Frame frame_with_uid(std::uint64_t uid) {
+  Frame frame;
+  frame.uid = uid;
+  return frame;
+}
+
+TEST(NetworkPhy, ThresholdDecidesAudibility) {
+  RecordingListener listener;
+  const Phy phy(PhyConfig{16.0, -90.0}, listener);
+  EXPECT_TRUE(phy.audible(-90.0));
+  EXPECT_TRUE(phy.audible(-20.0));
+  EXPECT_FALSE(phy.audible(-90.001));
+}
+
+TEST(NetworkPhy, OverlappingFramesAreAllReceivedAndCarrierSenseFollowsThem) {
+  RecordingListener listener;
+  Phy phy(PhyConfig{16.0, -90.0}, listener);
+  EXPECT_EQ(phy.state(), Phy::State::idle);
+  EXPECT_FALSE(phy.medium_busy());
+
+  phy.signal_start(1, -50.0);
+  EXPECT_EQ(phy.state(), Phy::State::receiving);
+  EXPECT_TRUE(phy.medium_busy());
+  phy.signal_start(2, -60.0);  // overlaps: no interference in the threshold PHY
+  phy.signal_end(frame_with_uid(1), -50.0);
+  EXPECT_TRUE(phy.medium_busy());
+  phy.signal_end(frame_with_uid(2), -60.0);
+  EXPECT_FALSE(phy.medium_busy());
+  EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "rx 1", "idle", "rx 2"}));
+  EXPECT_EQ(listener.last_power_dbm, -60.0);
+}
+
+TEST(NetworkPhy, OwnTransmissionMakesTheMediumBusyWithoutCallbacks) {
+  RecordingListener listener;
+  Phy phy(PhyConfig{16.0, -90.0}, listener);
+  phy.start_transmission();
+  EXPECT_EQ(phy.state(), Phy::State::transmitting);
+  EXPECT_TRUE(phy.medium_busy());
+  EXPECT_THROW(phy.start_transmission(), std::logic_error);
+  phy.signal_start(7, -40.0);  // already busy: no busy callback
+  EXPECT_EQ(phy.state(), Phy::State::transmitting);
+  phy.end_transmission();
+  EXPECT_EQ(phy.state(), Phy::State::receiving);
+  EXPECT_TRUE(phy.medium_busy());
+  phy.signal_end(frame_with_uid(7), -40.0);
+  EXPECT_EQ(phy.state(), Phy::State::idle);
+  EXPECT_EQ(listener.log, (std::vector<std::string>{"tx_end", "idle", "rx 7"}));
+}
+
+}  // namespace
+}  // namespace swarmnet
