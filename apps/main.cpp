@@ -1,5 +1,7 @@
 // The swarmnet command: run, validate, plugins.
 #include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -10,7 +12,9 @@
 #include "default_scenario.hpp"
 #include "plugin/plugin_catalog.hpp"
 #include "plugin/plugin_loader.hpp"
+#include "run/network_process.hpp"
 #include "run/run.hpp"
+#include "run/stop_signal.hpp"
 #include "scenario/scenario_loader.hpp"
 
 namespace {
@@ -50,7 +54,13 @@ swarmnet::Scenario load(const ScenarioArguments& args) {
   return swarmnet::load_scenario(args.file, overrides, loader);
 }
 
-int run_command(ScenarioArguments args, bool quiet) {
+struct TransportArguments {
+  std::string kind = "shm";
+  std::string remote;
+  double step_timeout_s = 60.0;
+};
+
+int run_command(ScenarioArguments args, bool quiet, const TransportArguments& transport) {
   if (args.file.empty()) args.file = swarmnet::default_scenario_path().string();
   swarmnet::Scenario scenario;
   try {
@@ -61,10 +71,16 @@ int run_command(ScenarioArguments args, bool quiet) {
   try {
     swarmnet::RunOptions options;
     options.progress = quiet ? nullptr : stderr;
+    options.link.kind = *swarmnet::parse_transport_kind(transport.kind);
+    options.link.remote = transport.remote;
+    options.link.step_timeout =
+        std::chrono::milliseconds(std::llround(transport.step_timeout_s * 1e3));
+    swarmnet::install_stop_handlers();
     const auto outcome = swarmnet::run_scenario(scenario, options);
     if (!quiet) swarmnet::print_summary(stdout, outcome);
   } catch (const std::exception& error) {
-    return fail(kRunFailed, error.what());
+    const int signal = swarmnet::stop_signal();
+    return fail(signal != 0 ? 128 + signal : kRunFailed, error.what());
   }
   return 0;
 }
@@ -112,6 +128,34 @@ int main(int argc, char** argv) {
   run->add_option("file", run_args.file, "scenario file")->check(CLI::ExistingFile);
   add_scenario_options(run, run_args, true);
   run->add_flag("-q,--quiet", quiet, "print nothing but errors");
+  TransportArguments transport;
+  run->add_option("--transport", transport.kind,
+                  "how the two halves talk: shm (two processes, shared memory), inproc (threads), "
+                  "uds (Unix socket), tcp (TCP loopback)")
+      ->check(CLI::IsMember({"shm", "inproc", "uds", "tcp"}))
+      ->capture_default_str();
+  run->add_option("--net", transport.remote,
+                  "use a network half started with 'swarmnet net --listen' (tcp://HOST:PORT)");
+  run->add_option("--step-timeout", transport.step_timeout_s,
+                  "seconds to wait for the other half before declaring it hung")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+
+  swarmnet::NetworkProcessOptions net_options;
+  double net_timeout_ms = 60000.0;
+  std::string net_out;
+  auto* net = app.add_subcommand(
+      "net", "the network half as a process of its own (started by 'run', or with --listen)");
+  auto* source = net->add_option_group("connection", "how to reach the robot half");
+  source->add_option("--shm", net_options.shm, "shared-memory segment to attach to");
+  source->add_option("--uds", net_options.uds, "Unix socket to connect to");
+  source->add_option("--tcp", net_options.tcp, "HOST:PORT to connect to");
+  source->add_option("--listen", net_options.listen, "accept one robot half on HOST:PORT");
+  source->require_option(1);
+  net->add_option("--parent", net_options.parent, "stop when this process is gone");
+  net->add_option("--step-timeout-ms", net_timeout_ms, "milliseconds to wait for the robot half")
+      ->check(CLI::PositiveNumber);
+  net->add_option("--out", net_out, "with --listen: directory for the network half's outputs");
 
   ScenarioArguments validate_args;
   auto* validate = app.add_subcommand("validate", "check a scenario without running it");
@@ -131,7 +175,12 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     return app.exit(error) == 0 ? 0 : kBadInput;
   }
-  if (*run) return run_command(run_args, quiet);
+  if (*run) return run_command(run_args, quiet, transport);
+  if (*net) {
+    net_options.step_timeout = std::chrono::milliseconds(std::llround(net_timeout_ms));
+    net_options.out = net_out;
+    return swarmnet::run_network_process(net_options);
+  }
   if (*validate) return validate_command(validate_args);
   if (*plugins) return plugins_command(plugin_name);
   return kBadInput;

@@ -9,7 +9,8 @@ namespace swarmnet {
 
 void InprocChannel::AlignedFree::operator()(void* p) const { std::free(p); }
 
-InprocChannel::InprocChannel(std::uint64_t ring_bytes, const WaitPolicy& policy) {
+InprocChannel::InprocChannel(std::uint64_t ring_bytes, const WaitPolicy& policy)
+    : ring_bytes_(ring_bytes) {
   const std::size_t one = SpscRing::footprint(ring_bytes);
   memory_.reset(std::aligned_alloc(kCacheLineBytes, 2 * one));
   if (!memory_) throw std::bad_alloc();

@@ -15,6 +15,7 @@ class InprocChannel {
   explicit InprocChannel(std::uint64_t ring_bytes = std::uint64_t{1} << 20,
                          const WaitPolicy& policy = {});
 
+  [[nodiscard]] std::uint64_t ring_bytes() const { return ring_bytes_; }
   RingTransport& robot_end() { return *robot_end_; }
   RingTransport& network_end() { return *network_end_; }
 
@@ -22,6 +23,7 @@ class InprocChannel {
   struct AlignedFree {
     void operator()(void* p) const;
   };
+  std::uint64_t ring_bytes_;
   std::unique_ptr<void, AlignedFree> memory_;
   std::unique_ptr<RingTransport> robot_end_;
   std::unique_ptr<RingTransport> network_end_;

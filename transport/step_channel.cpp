@@ -36,6 +36,10 @@ const char* to_string(RecordType type) {
       return "report";
     case RecordType::failure:
       return "failure";
+    case RecordType::hello:
+      return "hello";
+    case RecordType::welcome:
+      return "welcome";
   }
   return "unknown";
 }
@@ -43,8 +47,9 @@ const char* to_string(RecordType type) {
 StepChannel::StepChannel(Transport& transport, std::string peer)
     : transport_(transport), peer_(std::move(peer)) {}
 
-ProtocolResult StepChannel::send(const char* what) {
-  const IoStatus status = transport_.send(out_);
+ProtocolResult StepChannel::send(const char* what, bool last_of_batch) {
+  IoStatus status = transport_.send(out_);
+  if (status == IoStatus::ok && last_of_batch) status = transport_.flush();
   if (status == IoStatus::ok) return {};
   return {status, "cannot send " + std::string(what) + " to " + peer_ + ": " + to_string(status)};
 }
@@ -60,7 +65,7 @@ ProtocolResult StepChannel::receive(RecordType& type, RecordReader*& reader) {
   }
   reader_.emplace(in_);
   std::uint32_t raw = 0;
-  if (!reader_->get(raw) || raw < 1 || raw > static_cast<std::uint32_t>(RecordType::failure)) {
+  if (!reader_->get(raw) || raw < 1 || raw > static_cast<std::uint32_t>(RecordType::welcome)) {
     return {IoStatus::corrupt,
             "malformed record from " + peer_ + ": unknown record type " + std::to_string(raw)};
   }
@@ -69,6 +74,7 @@ ProtocolResult StepChannel::receive(RecordType& type, RecordReader*& reader) {
   if (type == RecordType::failure) {
     std::vector<std::byte> text;
     if (!reader->get_bytes(text, kMaxTextBytes)) return malformed(type);
+    peer_failed_ = true;
     return {
         IoStatus::closed,
         peer_ + " failed: " + std::string(reinterpret_cast<const char*>(text.data()), text.size())};
@@ -84,6 +90,80 @@ ProtocolResult StepChannel::malformed(RecordType type) const {
 ProtocolResult StepChannel::unexpected(RecordType got, const char* expected) const {
   return {IoStatus::corrupt, "protocol error: " + peer_ + " sent a " + to_string(got) +
                                  " record where " + expected + " was expected"};
+}
+
+ProtocolResult StepChannel::send_hello(const Hello& hello) {
+  RecordWriter(out_)
+      .put(static_cast<std::uint32_t>(RecordType::hello))
+      .put(hello.protocol_version)
+      .put(hello.seed)
+      .put(hello.robots)
+      .put(hello.step_ns)
+      .put_bytes(as_bytes(hello.scenario_yaml))
+      .put_bytes(as_bytes(hello.run_dir));
+  return send("hello", true);
+}
+
+ProtocolResult StepChannel::receive_hello(Hello& hello) {
+  RecordType type{};
+  RecordReader* reader = nullptr;
+  if (auto r = receive(type, reader); !r.ok()) return r;
+  if (type != RecordType::hello) return unexpected(type, "hello");
+  if (!reader->get(hello.protocol_version)) return malformed(type);
+  if (hello.protocol_version != kStepProtocolVersion) {
+    return {IoStatus::corrupt,
+            "protocol version mismatch: " + peer_ + " speaks step protocol version " +
+                std::to_string(hello.protocol_version) + ", this one speaks version " +
+                std::to_string(kStepProtocolVersion)};
+  }
+  std::vector<std::byte> yaml;
+  std::vector<std::byte> dir;
+  if (!reader->get(hello.seed) || !reader->get(hello.robots) || !reader->get(hello.step_ns) ||
+      !reader->get_bytes(yaml, kMaxTextBytes) || !reader->get_bytes(dir, kMaxTextBytes) ||
+      !reader->at_end()) {
+    return malformed(type);
+  }
+  hello.scenario_yaml.assign(reinterpret_cast<const char*>(yaml.data()), yaml.size());
+  hello.run_dir.assign(reinterpret_cast<const char*>(dir.data()), dir.size());
+  return {};
+}
+
+ProtocolResult StepChannel::send_welcome(const Hello& accepted) {
+  RecordWriter(out_)
+      .put(static_cast<std::uint32_t>(RecordType::welcome))
+      .put(kStepProtocolVersion)
+      .put(accepted.seed)
+      .put(accepted.robots)
+      .put(accepted.step_ns);
+  return send("welcome", true);
+}
+
+ProtocolResult StepChannel::receive_welcome(const Hello& sent) {
+  RecordType type{};
+  RecordReader* reader = nullptr;
+  if (auto r = receive(type, reader); !r.ok()) return r;
+  if (type != RecordType::welcome) return unexpected(type, "welcome");
+  std::uint32_t version = 0;
+  Hello echo;
+  if (!reader->get(version)) return malformed(type);
+  if (version != sent.protocol_version) {
+    return {IoStatus::corrupt, "protocol version mismatch: " + peer_ +
+                                   " speaks step protocol version " + std::to_string(version) +
+                                   ", this one speaks version " +
+                                   std::to_string(sent.protocol_version)};
+  }
+  if (!reader->get(echo.seed) || !reader->get(echo.robots) || !reader->get(echo.step_ns) ||
+      !reader->at_end()) {
+    return malformed(type);
+  }
+  if (echo.seed != sent.seed || echo.robots != sent.robots || echo.step_ns != sent.step_ns) {
+    return {IoStatus::corrupt,
+            "handshake mismatch: " + peer_ + " would simulate " + std::to_string(echo.robots) +
+                " robots, seed " + std::to_string(echo.seed) + ", step " +
+                std::to_string(echo.step_ns) + " ns; asked for " + std::to_string(sent.robots) +
+                ", " + std::to_string(sent.seed) + ", " + std::to_string(sent.step_ns) + " ns"};
+  }
+  return {};
 }
 
 ProtocolResult StepChannel::send_batch(const StepBatch& batch) {
@@ -114,7 +194,7 @@ ProtocolResult StepChannel::send_batch(const StepBatch& batch) {
     if (auto r = send("message"); !r.ok()) return r;
   }
   RecordWriter(out_).put(static_cast<std::uint32_t>(RecordType::step_end)).put(batch.step);
-  return send("step_end");
+  return send("step_end", true);
 }
 
 ProtocolResult StepChannel::receive_batch(StepBatch& batch, bool& finished) {
@@ -195,7 +275,7 @@ ProtocolResult StepChannel::send_result(const StepResult& result) {
       .put(result.step)
       .put(result.events)
       .put(static_cast<std::uint32_t>(result.deliveries.size()));
-  return send("step_done");
+  return send("step_done", true);
 }
 
 ProtocolResult StepChannel::receive_result(StepResult& result) {
@@ -235,12 +315,12 @@ ProtocolResult StepChannel::receive_result(StepResult& result) {
 
 ProtocolResult StepChannel::send_finish() {
   RecordWriter(out_).put(static_cast<std::uint32_t>(RecordType::finish));
-  return send("finish");
+  return send("finish", true);
 }
 
 ProtocolResult StepChannel::send_report(const std::string& json) {
   RecordWriter(out_).put(static_cast<std::uint32_t>(RecordType::report)).put_bytes(as_bytes(json));
-  return send("report");
+  return send("report", true);
 }
 
 ProtocolResult StepChannel::receive_report(std::string& json) {

@@ -29,6 +29,21 @@ enum class RecordType : std::uint32_t {
   finish = 7,
   report = 8,
   failure = 9,
+  hello = 10,
+  welcome = 11,
+};
+
+// Version of the records above; both halves must speak the same one.
+inline constexpr std::uint32_t kStepProtocolVersion = 1;
+
+// The handshake's initial parameters (the study's Fig. 1), sent by the robot half.
+struct Hello {
+  std::uint32_t protocol_version = kStepProtocolVersion;
+  std::uint64_t seed = 0;
+  std::uint32_t robots = 0;
+  std::int64_t step_ns = 0;
+  std::string scenario_yaml;  // the resolved scenario: arena, radio and every plugin's parameters
+  std::string run_dir;        // where the network half writes its outputs
 };
 
 const char* to_string(RecordType type);
@@ -46,6 +61,13 @@ class StepChannel {
   // `peer` names the other half in error messages ("the network half").
   StepChannel(Transport& transport, std::string peer);
 
+  // Handshake. The network side answers a hello with welcome (echoing what it will simulate),
+  // or with failure when it cannot: a protocol version mismatch names both versions.
+  ProtocolResult send_hello(const Hello& hello);
+  ProtocolResult receive_welcome(const Hello& sent);
+  ProtocolResult receive_hello(Hello& hello);
+  ProtocolResult send_welcome(const Hello& accepted);
+
   // Robot side.
   ProtocolResult send_batch(const StepBatch& batch);
   ProtocolResult receive_result(StepResult& result);
@@ -61,9 +83,11 @@ class StepChannel {
   void send_failure(const std::string& message);
 
   [[nodiscard]] Transport& transport() { return transport_; }
+  // True once the peer has explained a failure with a failure record.
+  [[nodiscard]] bool peer_failed() const { return peer_failed_; }
 
  private:
-  ProtocolResult send(const char* what);
+  ProtocolResult send(const char* what, bool last_of_batch = false);
   ProtocolResult receive(RecordType& type, RecordReader*& reader);
   ProtocolResult malformed(RecordType type) const;
   ProtocolResult unexpected(RecordType got, const char* expected) const;
@@ -73,6 +97,7 @@ class StepChannel {
   std::vector<std::byte> out_;
   std::vector<std::byte> in_;
   std::optional<RecordReader> reader_;
+  bool peer_failed_ = false;
 };
 
 }  // namespace swarmnet

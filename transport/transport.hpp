@@ -23,8 +23,12 @@ class Transport {
 
   // Sends one record, waiting while the channel is full.
   virtual IoStatus send(std::span<const std::byte> record) = 0;
-  // Sends one record only if it fits now; never waits (for last words on a failure path).
+  // Sends one record and makes it visible only if that can be done now; never waits (for last
+  // words on a failure path).
   virtual IoStatus try_send(std::span<const std::byte> record) = 0;
+  // Makes every record sent so far visible to the peer. The step protocol calls it once per
+  // batch, so a transport may gather records and make one system call per step.
+  virtual IoStatus flush() = 0;
   // Receives the next record, waiting until one arrives.
   virtual IoStatus receive(std::vector<std::byte>& record) = 0;
   // No more sends: after draining, the peer's receive() returns IoStatus::closed.

@@ -11,8 +11,8 @@ TEST(CommandLine, DefaultRunPrintsItsSummary) {
   TempDir dir;
   const auto result = run_swarmnet("run --set duration_s=10 --out " + dir.path().string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  for (const char* text : {"robots        50", "simulated", "real time", "delivered",
-                           "delivery ratio", "outputs"}) {
+  for (const char* text :
+       {"robots        50", "simulated", "real time", "delivered", "delivery ratio", "outputs"}) {
     EXPECT_NE(result.output.find(text), std::string::npos) << "missing '" << text << "' in\n"
                                                            << result.output;
   }
@@ -42,8 +42,8 @@ TEST(CommandLine, ValidateAcceptsTheQuickstart) {
 TEST(CommandLine, PluginsListsEveryKind) {
   const auto result = run_swarmnet("plugins");
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  for (const char* name : {"kinematic2d", "diffusion", "cbr", "disk", "ideal_mac", "direct",
-                           "flooding"}) {
+  for (const char* name :
+       {"kinematic2d", "diffusion", "cbr", "disk", "ideal_mac", "direct", "flooding"}) {
     EXPECT_NE(result.output.find(name), std::string::npos) << name << " not listed";
   }
   const auto one = run_swarmnet("plugins flooding");

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "command_runner.hpp"
 
@@ -11,13 +12,15 @@ namespace {
 
 const std::string kScenario = std::string(SWARMNET_SOURCE_DIR) + "/configs/quickstart.yaml";
 // Small enough for the default suite, busy enough to exercise flooding and collisions.
-const std::string kSmall = " --set robots.count=30 --set duration_s=20 --set arena.width_m=300"
-                           " --set arena.height_m=300 --set arena.obstacles=[]";
+const std::string kSmall =
+    " --set robots.count=30 --set duration_s=20 --set arena.width_m=300"
+    " --set arena.height_m=300 --set arena.obstacles=[]";
 
-// summary.json without the fields that measure the machine rather than the simulation.
+// summary.json without the fields that measure the machine or name the transport rather than
+// describe the simulation.
 std::string summary_without_timing(const std::filesystem::path& dir) {
   auto summary = nlohmann::ordered_json::parse(read_file(dir / "summary.json"));
-  for (const char* key : {"wall_s", "cpu_s", "realtime_factor"}) {
+  for (const char* key : {"wall_s", "cpu_s", "realtime_factor", "transport"}) {
     EXPECT_TRUE(summary.contains(key)) << key;
     summary.erase(key);
   }
@@ -25,30 +28,54 @@ std::string summary_without_timing(const std::filesystem::path& dir) {
 }
 
 void run_into(const std::filesystem::path& dir, const std::string& extra) {
-  const auto result = run_swarmnet("run " + kScenario + kSmall + extra + " --quiet --out " + dir.string());
+  const auto result =
+      run_swarmnet("run " + kScenario + kSmall + extra + " --quiet --out " + dir.string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
 }
 
 constexpr const char* kTraces[] = {"packets.csv", "mobility.ns2", "traffic.csv",
                                    "scenario.resolved.yaml"};
 
-void expect_identical_runs(const std::string& extra) {
-  TempDir a;
-  TempDir b;
-  run_into(a.path(), extra);
-  run_into(b.path(), extra);
-  for (const char* file : kTraces) {
-    const std::string first = read_file(a.path() / file);
-    EXPECT_FALSE(first.empty()) << file;
-    EXPECT_TRUE(first == read_file(b.path() / file)) << file << " differs between identical runs";
+// Runs each variant into the same run directory (the resolved scenario names it), keeping each
+// result, and expects every output identical to the first's.
+void expect_identical_runs(const std::vector<std::string>& variants) {
+  TempDir dir;
+  const auto out = dir.path() / "run";
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    run_into(out, variants[i]);
+    std::filesystem::rename(out, dir.path() / std::to_string(i));
   }
-  EXPECT_EQ(summary_without_timing(a.path()), summary_without_timing(b.path()));
+  const auto first = dir.path() / "0";
+  for (std::size_t i = 1; i < variants.size(); ++i) {
+    const auto other = dir.path() / std::to_string(i);
+    for (const char* file : kTraces) {
+      const std::string expected = read_file(first / file);
+      EXPECT_FALSE(expected.empty()) << file;
+      EXPECT_TRUE(expected == read_file(other / file))
+          << file << " differs between '" << variants[0] << "' and '" << variants[i] << "'";
+    }
+    EXPECT_EQ(summary_without_timing(first), summary_without_timing(other))
+        << "between '" << variants[0] << "' and '" << variants[i] << "'";
+  }
 }
 
-TEST(RunDeterminism, SameSeedGivesIdenticalBytesInStrictMode) { expect_identical_runs(" --seed 7"); }
+TEST(RunDeterminism, SameSeedGivesIdenticalBytesInStrictMode) {
+  expect_identical_runs({" --seed 7", " --seed 7"});
+}
 
 TEST(RunDeterminism, SameSeedGivesIdenticalBytesInPipelinedMode) {
-  expect_identical_runs(" --seed 7 --set sync=pipelined");
+  expect_identical_runs({" --seed 7 --set sync=pipelined", " --seed 7 --set sync=pipelined"});
+}
+
+// Every transport carries the same records, so every transport gives the same bytes.
+TEST(RunDeterminism, EveryTransportGivesIdenticalBytes) {
+  for (const char* sync : {"strict", "pipelined"}) {
+    std::vector<std::string> variants;
+    for (const char* transport : {"shm", "inproc", "uds", "tcp"}) {
+      variants.push_back(std::string(" --seed 3 --set sync=") + sync + " --transport " + transport);
+    }
+    expect_identical_runs(variants);
+  }
 }
 
 TEST(RunDeterminism, AnotherSeedGivesDifferentTraces) {
@@ -65,15 +92,16 @@ TEST(RunOutputs, SummaryCarriesTheContractFields) {
   TempDir dir;
   run_into(dir.path(), "");
   const auto s = nlohmann::json::parse(read_file(dir.path() / "summary.json"));
-  for (const char* key : {"scenario", "seed", "robots", "sim_time_s", "steps", "wall_s", "cpu_s",
-                          "realtime_factor", "packets", "pdr", "delay_s", "hops_mean", "mac",
-                          "routing", "controllers"}) {
+  for (const char* key :
+       {"scenario", "seed", "robots", "sim_time_s", "steps", "wall_s", "cpu_s", "realtime_factor",
+        "packets", "pdr", "delay_s", "hops_mean", "mac", "routing", "controllers"}) {
     EXPECT_TRUE(s.contains(key)) << "summary.json lacks " << key;
   }
   for (const char* key : {"robot", "network", "transport"}) EXPECT_TRUE(s["cpu_s"].contains(key));
   for (const char* key : {"sent", "delivered", "dropped"}) EXPECT_TRUE(s["packets"].contains(key));
   for (const char* key : {"mean", "p50", "p95"}) EXPECT_TRUE(s["delay_s"].contains(key));
-  for (const char* key : {"tx_frames", "collisions", "retries"}) EXPECT_TRUE(s["mac"].contains(key));
+  for (const char* key : {"tx_frames", "collisions", "retries"})
+    EXPECT_TRUE(s["mac"].contains(key));
   EXPECT_EQ(s["robots"], 30);
   EXPECT_EQ(s["steps"], 200);
   // 6 senders (20% of 30) at 5 messages/s from t = 1 s: about 6 * 5 * 19 messages.
@@ -82,8 +110,7 @@ TEST(RunOutputs, SummaryCarriesTheContractFields) {
   EXPECT_GT(s["packets"]["delivered"].get<int>(), 0);
   // No file of the run is left under a temporary name.
   for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
-    EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos)
-        << entry.path();
+    EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
   }
 }
 

@@ -136,5 +136,62 @@ TEST(StepChannel, PeerFailureAndCloseAreExplained) {
   EXPECT_EQ(robot.send_batch(sample_batch(3, 1)).io, IoStatus::closed);
 }
 
+Hello sample_hello() {
+  Hello hello;
+  hello.seed = 9;
+  hello.robots = 40;
+  hello.step_ns = 100'000'000;
+  hello.scenario_yaml = "name: x\n";
+  hello.run_dir = "/tmp/run";
+  return hello;
+}
+
+TEST(StepChannel, HandshakeExchangesTheInitialParameters) {
+  InprocChannel link(std::uint64_t{1} << 16);
+  StepChannel robot(link.robot_end(), "the network half");
+  StepChannel network(link.network_end(), "the robot half");
+  const Hello sent = sample_hello();
+  ASSERT_TRUE(robot.send_hello(sent).ok());
+  Hello got;
+  ASSERT_TRUE(network.receive_hello(got).ok());
+  EXPECT_EQ(got.seed, 9U);
+  EXPECT_EQ(got.robots, 40U);
+  EXPECT_EQ(got.step_ns, 100'000'000);
+  EXPECT_EQ(got.scenario_yaml, "name: x\n");
+  EXPECT_EQ(got.run_dir, "/tmp/run");
+  ASSERT_TRUE(network.send_welcome(got).ok());
+  const auto r = robot.receive_welcome(sent);
+  EXPECT_TRUE(r.ok()) << r.error;
+}
+
+TEST(StepChannel, ProtocolVersionMismatchNamesBothVersions) {
+  InprocChannel link(std::uint64_t{1} << 16);
+  StepChannel robot(link.robot_end(), "the network half");
+  StepChannel network(link.network_end(), "the robot half");
+  Hello sent = sample_hello();
+  sent.protocol_version = kStepProtocolVersion + 1;
+  ASSERT_TRUE(robot.send_hello(sent).ok());
+  Hello got;
+  const auto r = network.receive_hello(got);
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("protocol version mismatch: the robot half speaks step protocol version " +
+                         std::to_string(kStepProtocolVersion + 1) + ", this one speaks version " +
+                         std::to_string(kStepProtocolVersion)),
+            std::string::npos)
+      << r.error;
+}
+
+TEST(StepChannel, WelcomeThatDisagreesIsRefused) {
+  InprocChannel link(std::uint64_t{1} << 16);
+  StepChannel robot(link.robot_end(), "the network half");
+  StepChannel network(link.network_end(), "the robot half");
+  const Hello sent = sample_hello();
+  Hello other = sent;
+  other.robots = 41;
+  ASSERT_TRUE(network.send_welcome(other).ok());
+  const auto r = robot.receive_welcome(sent);
+  EXPECT_NE(r.error.find("handshake mismatch"), std::string::npos) << r.error;
+}
+
 }  // namespace
 }  // namespace swarmnet

@@ -1,0 +1,87 @@
+#include "run/network_half.hpp"
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "network/network_simulator.hpp"
+#include "plugin/plugin_loader.hpp"
+#include "run/atomic_file.hpp"
+#include "run/cpu_clock.hpp"
+#include "run/output_files.hpp"
+#include "run/run_error.hpp"
+
+namespace swarmnet {
+
+namespace {
+
+void serve(const Scenario& scenario, StepChannel& channel, const std::filesystem::path& run_dir) {
+  const double cpu_start = thread_cpu_seconds();
+  double transport_cpu = 0.0;
+  std::optional<AtomicFile> trace;
+  if (scenario.output.packet_trace) trace.emplace(run_dir / kPacketTraceFile);
+  PluginLoader loader(scenario.plugin_paths);
+  NetworkSimulator simulator(scenario, loader, trace ? &trace->stream() : nullptr);
+
+  StepBatch batch;
+  StepResult result;
+  for (;;) {
+    bool finished = false;
+    const double before_receive = thread_cpu_seconds();
+    const ProtocolResult received = channel.receive_batch(batch, finished);
+    transport_cpu += thread_cpu_seconds() - before_receive;
+    if (!received.ok()) throw RunError(received.error);
+    if (finished) break;
+    simulator.run_step(batch, result);
+    const double before_send = thread_cpu_seconds();
+    const ProtocolResult sent = channel.send_result(result);
+    transport_cpu += thread_cpu_seconds() - before_send;
+    if (!sent.ok()) throw RunError(sent.error);
+  }
+  simulator.finish();
+  if (trace) trace->commit();
+
+  nlohmann::ordered_json report = simulator.report();
+  const double total_cpu = thread_cpu_seconds() - cpu_start;
+  report["cpu_s"] = {{"network", total_cpu - transport_cpu}, {"transport", transport_cpu}};
+  const ProtocolResult sent = channel.send_report(report.dump());
+  if (!sent.ok()) throw RunError(sent.error);
+}
+
+}  // namespace
+
+void serve_network_half(const Scenario& scenario, StepChannel& channel,
+                        const std::filesystem::path& run_dir) {
+  try {
+    serve(scenario, channel, run_dir);
+  } catch (const std::exception& error) {
+    channel.send_failure(error.what());
+    channel.transport().close();
+    throw RunError(std::string("network half: ") + error.what());
+  }
+  channel.transport().close();
+}
+
+void serve_network_connection(StepChannel& channel,
+                              const std::function<NetworkSetup(const Hello&)>& setup) {
+  Hello hello;
+  std::optional<NetworkSetup> accepted;
+  try {
+    const ProtocolResult received = channel.receive_hello(hello);
+    if (!received.ok()) throw RunError(received.error);
+    accepted.emplace(setup(hello));
+    Hello answer = hello;
+    answer.seed = accepted->scenario.seed;
+    answer.robots = accepted->scenario.robots.count;
+    answer.step_ns = from_seconds(accepted->scenario.step_s).count();
+    const ProtocolResult sent = channel.send_welcome(answer);
+    if (!sent.ok()) throw RunError(sent.error);
+  } catch (const std::exception& error) {
+    channel.send_failure(error.what());
+    channel.transport().close();
+    throw RunError(std::string("network half: ") + error.what());
+  }
+  serve_network_half(accepted->scenario, channel, accepted->run_dir);
+}
+
+}  // namespace swarmnet

@@ -1,0 +1,30 @@
+// The network half's side of a run: receives each step's batch over the channel, simulates the
+// step's window, returns the deliveries; on finish, returns its metrics. The same loop serves a
+// thread (in-process transport) or a child process (shared memory, sockets).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+
+#include "scenario/scenario.hpp"
+#include "step_channel.hpp"
+
+namespace swarmnet {
+
+// Runs until the robot half sends finish, then commits the packet trace (when the scenario asks
+// for one) into `run_dir` and sends the report. On any error it tells the robot half why
+// (a failure record), closes the channel and throws RunError.
+void serve_network_half(const Scenario& scenario, StepChannel& channel,
+                        const std::filesystem::path& run_dir);
+
+// What the network half simulates and where it writes, decided from the robot half's hello.
+struct NetworkSetup {
+  Scenario scenario;
+  std::filesystem::path run_dir;
+};
+
+// Answers the handshake (welcome, or failure with the reason), then serve_network_half().
+void serve_network_connection(StepChannel& channel,
+                              const std::function<NetworkSetup(const Hello&)>& setup);
+
+}  // namespace swarmnet

@@ -1,0 +1,250 @@
+#include "run/network_link.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <thread>
+
+#include "inproc_channel.hpp"
+#include "ring_transport.hpp"
+#include "run/child_process.hpp"
+#include "run/network_half.hpp"
+#include "run/run_error.hpp"
+#include "run/stop_signal.hpp"
+#include "shm_segment.hpp"
+#include "socket_transport.hpp"
+#include "step_channel.hpp"
+#include "transport_error.hpp"
+
+namespace swarmnet {
+
+const char* to_string(TransportKind kind) {
+  switch (kind) {
+    case TransportKind::shm:
+      return "shm";
+    case TransportKind::inproc:
+      return "inproc";
+    case TransportKind::uds:
+      return "uds";
+    case TransportKind::tcp:
+      return "tcp";
+  }
+  return "?";
+}
+
+std::optional<TransportKind> parse_transport_kind(std::string_view text) {
+  for (TransportKind kind :
+       {TransportKind::shm, TransportKind::inproc, TransportKind::uds, TransportKind::tcp}) {
+    if (text == to_string(kind)) return kind;
+  }
+  return std::nullopt;
+}
+
+namespace {
+
+// How long a network half may take to stop after the robot half closed its end.
+constexpr std::chrono::milliseconds kStopGrace{2000};
+
+WaitPolicy policy_with(const LinkOptions& options, std::function<bool()> peer_alive) {
+  WaitPolicy policy;
+  policy.timeout = options.step_timeout;
+  policy.peer_alive = [alive = std::move(peer_alive)] {
+    return stop_signal() == 0 && (!alive || alive());
+  };
+  return policy;
+}
+
+std::string mib(std::uint64_t bytes) { return std::to_string(bytes >> 20U) + " MiB"; }
+
+// Both halves as threads of this process over heap rings.
+class InprocLink final : public NetworkLink {
+ public:
+  InprocLink(const Scenario& scenario, const std::filesystem::path& run_dir,
+             const LinkOptions& options)
+      : channel_(options.ring_bytes, policy_with(options, {})),
+        network_channel_(channel_.network_end(), "the robot half") {
+    thread_ = std::thread([this, &scenario, run_dir] {
+      try {
+        serve_network_connection(network_channel_, [&](const Hello&) {
+          return NetworkSetup{scenario, run_dir};
+        });
+      } catch (const std::exception& error) {
+        error_ = error.what();
+      }
+    });
+  }
+  ~InprocLink() override {
+    if (thread_.joinable()) {
+      channel_.robot_end().close();
+      thread_.join();
+    }
+  }
+  Transport& transport() override { return channel_.robot_end(); }
+  [[nodiscard]] std::string describe() const override {
+    return "in-process rings, " + mib(channel_.ring_bytes()) + " each way";
+  }
+  std::string finish() override {
+    thread_.join();
+    return error_;
+  }
+
+ private:
+  InprocChannel channel_;
+  StepChannel network_channel_;
+  std::thread thread_;
+  std::string error_;
+};
+
+// A child `swarmnet net` process over any transport.
+class ChildLink final : public NetworkLink {
+ public:
+  ChildLink(std::unique_ptr<ChildProcess> child, std::unique_ptr<Transport> transport,
+            std::unique_ptr<ShmSegment> segment, std::string description)
+      : child_(std::move(child)),
+        transport_(std::move(transport)),
+        segment_(std::move(segment)),
+        description_(std::move(description)) {}
+  Transport& transport() override { return *transport_; }
+  [[nodiscard]] std::string describe() const override {
+    return description_ + ", network half pid " + std::to_string(child_->pid());
+  }
+  void connected() override {
+    if (segment_) segment_->remove_name();
+  }
+  std::string finish() override {
+    const std::string how = child_->wait(kStopGrace);
+    if (segment_) segment_->remove_name();
+    return how.empty() ? "" : "the network half (pid " + std::to_string(child_->pid()) + ") " + how;
+  }
+
+ private:
+  std::unique_ptr<ChildProcess> child_;
+  std::unique_ptr<Transport> transport_;
+  std::unique_ptr<ShmSegment> segment_;
+  std::string description_;
+};
+
+// A network half started elsewhere (`swarmnet net --listen`).
+class RemoteLink final : public NetworkLink {
+ public:
+  RemoteLink(std::unique_ptr<Transport> transport, std::string description)
+      : transport_(std::move(transport)), description_(std::move(description)) {}
+  Transport& transport() override { return *transport_; }
+  [[nodiscard]] std::string describe() const override { return description_; }
+  std::string finish() override { return ""; }
+
+ private:
+  std::unique_ptr<Transport> transport_;
+  std::string description_;
+};
+
+std::pair<std::string, std::uint16_t> split_host_port(const std::string& text) {
+  const auto colon = text.rfind(':');
+  if (colon == std::string::npos || colon == 0 || colon + 1 == text.size()) {
+    throw RunError("'" + text + "' is not HOST:PORT");
+  }
+  const std::string port_text = text.substr(colon + 1);
+  char* end = nullptr;
+  const long port = std::strtol(port_text.c_str(), &end, 10);
+  if (*end != '\0' || port < 0 || port > 65535) throw RunError("bad port in '" + text + "'");
+  std::string host = text.substr(0, colon);
+  if (host.size() > 2 && host.front() == '[' && host.back() == ']')
+    host = host.substr(1, host.size() - 2);
+  return {host, static_cast<std::uint16_t>(port)};
+}
+
+std::vector<std::string> child_arguments(const LinkOptions& options, const std::string& flag,
+                                         const std::string& address) {
+  return {"net",
+          flag,
+          address,
+          "--parent",
+          std::to_string(::getpid()),
+          "--step-timeout-ms",
+          std::to_string(options.step_timeout.count())};
+}
+
+// A private directory for the Unix socket: mode 0700, removed when the object goes.
+class PrivateDirectory {
+ public:
+  PrivateDirectory() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "swarmnet-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr) throw RunError("cannot create a directory in /tmp");
+    path_ = pattern;
+  }
+  ~PrivateDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  PrivateDirectory(const PrivateDirectory&) = delete;
+  PrivateDirectory& operator=(const PrivateDirectory&) = delete;
+  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+}  // namespace
+
+std::pair<std::string, std::uint16_t> parse_host_port(const std::string& text) {
+  return split_host_port(text);
+}
+
+std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario,
+                                               const std::filesystem::path& run_dir,
+                                               const LinkOptions& options) {
+  if (!options.remote.empty()) {
+    const std::string prefix = "tcp://";
+    if (!options.remote.starts_with(prefix)) {
+      throw RunError("--net takes tcp://HOST:PORT, not '" + options.remote + "'");
+    }
+    const auto [host, port] = split_host_port(options.remote.substr(prefix.size()));
+    auto transport =
+        std::make_unique<SocketTransport>(connect_tcp(host, port), policy_with(options, {}), "TCP");
+    return std::make_unique<RemoteLink>(std::move(transport), "TCP to " + options.remote);
+  }
+  switch (options.kind) {
+    case TransportKind::inproc:
+      return std::make_unique<InprocLink>(scenario, run_dir, options);
+    case TransportKind::shm: {
+      auto segment = ShmSegment::create(options.ring_bytes);
+      auto child =
+          std::make_unique<ChildProcess>(child_arguments(options, "--shm", segment->name()));
+      ChildProcess* watched = child.get();
+      auto transport = std::make_unique<RingTransport>(
+          segment->robot_to_network(), segment->network_to_robot(),
+          policy_with(options, [watched] { return watched->alive(); }), "shared memory");
+      const std::string description = "shared-memory rings /dev/shm/" + segment->name() + ", " +
+                                      mib(options.ring_bytes) + " each way";
+      return std::make_unique<ChildLink>(std::move(child), std::move(transport), std::move(segment),
+                                         description);
+    }
+    case TransportKind::uds: {
+      PrivateDirectory directory;
+      const std::string path = (directory.path() / "network.sock").string();
+      const int listener = listen_unix(path);
+      auto child = std::make_unique<ChildProcess>(child_arguments(options, "--uds", path));
+      ChildProcess* watched = child.get();
+      const WaitPolicy policy = policy_with(options, [watched] { return watched->alive(); });
+      const int fd = accept_one(listener, policy, "Unix socket " + path);
+      auto transport = std::make_unique<SocketTransport>(fd, policy, "Unix-domain socket");
+      return std::make_unique<ChildLink>(std::move(child), std::move(transport), nullptr,
+                                         "Unix-domain socket");
+    }
+    case TransportKind::tcp: {
+      std::uint16_t port = 0;
+      const int listener = listen_tcp("127.0.0.1", 0, &port);
+      const std::string address = "127.0.0.1:" + std::to_string(port);
+      auto child = std::make_unique<ChildProcess>(child_arguments(options, "--tcp", address));
+      ChildProcess* watched = child.get();
+      const WaitPolicy policy = policy_with(options, [watched] { return watched->alive(); });
+      const int fd = accept_one(listener, policy, "TCP " + address);
+      auto transport = std::make_unique<SocketTransport>(fd, policy, "TCP loopback");
+      return std::make_unique<ChildLink>(std::move(child), std::move(transport), nullptr,
+                                         "TCP loopback " + address);
+    }
+  }
+  throw RunError("unknown transport");
+}
+
+}  // namespace swarmnet

@@ -1,0 +1,32 @@
+// One run of a scenario: the robot half in this thread, the network half beside it, coupled by
+// the step protocol; outputs in the scenario's run directory.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "run/network_link.hpp"
+#include "scenario/scenario.hpp"
+
+namespace swarmnet {
+
+struct RunOptions {
+  std::FILE* progress = stderr;  // progress line target (shown only on a terminal); null: none
+  LinkOptions link;              // how to reach the network half
+};
+
+struct RunOutcome {
+  std::filesystem::path dir;
+  nlohmann::ordered_json summary;
+};
+
+// Runs `scenario` to completion and writes its run directory. Throws RunError (or the error that
+// stopped the run) with a message naming what failed; files of a failed run are not left under
+// their final names, except run.log, which then ends with the error.
+RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options);
+
+// The human-readable summary printed after a run.
+void print_summary(std::FILE* out, const RunOutcome& outcome);
+
+}  // namespace swarmnet

@@ -1,0 +1,30 @@
+#include "run/stop_signal.hpp"
+
+#include <atomic>
+#include <csignal>
+
+namespace swarmnet {
+
+namespace {
+
+std::atomic<int> received{0};
+static_assert(std::atomic<int>::is_always_lock_free);
+
+extern "C" void record_stop_signal(int signal) {
+  received.store(signal, std::memory_order_relaxed);
+}
+
+}  // namespace
+
+void install_stop_handlers() {
+  struct sigaction action {};
+  action.sa_handler = record_stop_signal;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = 0;  // no SA_RESTART: blocking calls return EINTR and re-check
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+int stop_signal() { return received.load(std::memory_order_relaxed); }
+
+}  // namespace swarmnet

@@ -1,0 +1,13 @@
+// SIGINT and SIGTERM during a run: the handler only records the signal; the step loop and every
+// wait check it, so a run stops promptly and still cleans up (child process, shared memory,
+// temporary files) through the ordinary error path.
+#pragma once
+
+namespace swarmnet {
+
+// Installs the handlers (idempotent).
+void install_stop_handlers();
+// The signal that asked the run to stop, or 0.
+int stop_signal();
+
+}  // namespace swarmnet

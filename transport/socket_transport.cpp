@@ -1,0 +1,273 @@
+#include "socket_transport.hpp"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netdb.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+
+#include "transport_error.hpp"
+
+namespace swarmnet {
+
+namespace {
+
+constexpr std::size_t kLengthBytes = 4;
+constexpr std::size_t kFlushThreshold = std::size_t{1} << 20U;  // bound the send buffer
+
+std::string system_error() { return std::strerror(errno); }
+
+}  // namespace
+
+SocketTransport::SocketTransport(int fd, WaitPolicy policy, std::string description)
+    : fd_(fd), policy_(std::move(policy)), description_(std::move(description)) {
+  ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) | O_NONBLOCK);
+}
+
+SocketTransport::~SocketTransport() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+IoStatus SocketTransport::wait_for(short events) {
+  // The clock bounds how long we wait for the peer; it never reaches a result.
+  const auto deadline = std::chrono::steady_clock::now() + policy_.timeout;
+  for (;;) {
+    pollfd p{fd_, events, 0};
+    const auto slice = std::chrono::duration_cast<std::chrono::milliseconds>(policy_.sleep_slice);
+    const int ready = ::poll(&p, 1, static_cast<int>(std::max<std::int64_t>(1, slice.count())));
+    if (ready > 0) return IoStatus::ok;
+    if (ready < 0 && errno != EINTR) return IoStatus::closed;
+    if (policy_.peer_alive && !policy_.peer_alive()) return IoStatus::peer_dead;
+    if (std::chrono::steady_clock::now() >= deadline) return IoStatus::timeout;
+  }
+}
+
+IoStatus SocketTransport::send(std::span<const std::byte> record) {
+  if (write_closed_) return IoStatus::closed;
+  if (record.size() > kMaxRecordBytes) return IoStatus::too_large;
+  const auto length = static_cast<std::uint32_t>(record.size());
+  const auto* length_bytes = reinterpret_cast<const std::byte*>(&length);
+  out_.insert(out_.end(), length_bytes, length_bytes + kLengthBytes);
+  out_.insert(out_.end(), record.begin(), record.end());
+  return out_.size() >= kFlushThreshold ? flush() : IoStatus::ok;
+}
+
+IoStatus SocketTransport::try_send(std::span<const std::byte> record) {
+  const IoStatus status = send(record);
+  if (status != IoStatus::ok) return status;
+  const ssize_t n = ::send(fd_, out_.data(), out_.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
+  if (n > 0) out_.erase(out_.begin(), out_.begin() + n);
+  return out_.empty() ? IoStatus::ok : IoStatus::would_block;
+}
+
+IoStatus SocketTransport::flush() {
+  std::size_t done = 0;
+  while (done < out_.size()) {
+    const ssize_t n = ::send(fd_, out_.data() + done, out_.size() - done, MSG_NOSIGNAL);
+    if (n > 0) {
+      done += static_cast<std::size_t>(n);
+      continue;
+    }
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+      if (const IoStatus s = wait_for(POLLOUT); s != IoStatus::ok) return s;
+      continue;
+    }
+    return IoStatus::closed;  // EPIPE, ECONNRESET: the peer is gone
+  }
+  out_.clear();
+  return IoStatus::ok;
+}
+
+// Makes at least `bytes` unread bytes available in in_.
+IoStatus SocketTransport::fill(std::size_t bytes) {
+  if (in_start_ > 0 && in_start_ == in_.size()) {
+    in_.clear();
+    in_start_ = 0;
+  }
+  while (in_.size() - in_start_ < bytes) {
+    const std::size_t old = in_.size();
+    in_.resize(old + std::max<std::size_t>(bytes, 65536));
+    const ssize_t n = ::recv(fd_, in_.data() + old, in_.size() - old, 0);
+    in_.resize(old + static_cast<std::size_t>(std::max<ssize_t>(n, 0)));
+    if (n > 0) continue;
+    if (n == 0) return in_.size() == in_start_ ? IoStatus::closed : IoStatus::corrupt;
+    if (errno == EINTR) continue;
+    if (errno == EAGAIN || errno == EWOULDBLOCK) {
+      if (const IoStatus s = wait_for(POLLIN); s != IoStatus::ok) return s;
+      continue;
+    }
+    return IoStatus::closed;
+  }
+  return IoStatus::ok;
+}
+
+IoStatus SocketTransport::receive(std::vector<std::byte>& record) {
+  if (const IoStatus s = fill(kLengthBytes); s != IoStatus::ok) return s;
+  std::uint32_t length = 0;
+  std::memcpy(&length, in_.data() + in_start_, kLengthBytes);
+  if (length > kMaxRecordBytes) return IoStatus::corrupt;
+  if (const IoStatus s = fill(kLengthBytes + length); s != IoStatus::ok) {
+    return s == IoStatus::closed ? IoStatus::corrupt : s;  // cut off inside a record
+  }
+  const auto* begin = in_.data() + in_start_ + kLengthBytes;
+  record.assign(begin, begin + length);
+  in_start_ += kLengthBytes + length;
+  return IoStatus::ok;
+}
+
+void SocketTransport::close() {
+  if (write_closed_) return;
+  (void)flush();
+  ::shutdown(fd_, SHUT_WR);
+  write_closed_ = true;
+}
+
+namespace {
+
+sockaddr_un unix_address(const std::string& path) {
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  if (path.size() >= sizeof(address.sun_path)) {
+    throw TransportError("Unix socket path too long (" + std::to_string(path.size()) +
+                         " bytes, at most " + std::to_string(sizeof(address.sun_path) - 1) +
+                         "): " + path);
+  }
+  std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
+  return address;
+}
+
+addrinfo* resolve(const std::string& host, std::uint16_t port, bool passive) {
+  addrinfo hints{};
+  hints.ai_family = AF_UNSPEC;
+  hints.ai_socktype = SOCK_STREAM;
+  hints.ai_flags = passive ? AI_PASSIVE : 0;
+  addrinfo* result = nullptr;
+  const int rc = ::getaddrinfo(host.c_str(), std::to_string(port).c_str(), &hints, &result);
+  if (rc != 0) {
+    throw TransportError("cannot resolve " + host + ":" + std::to_string(port) + ": " +
+                         ::gai_strerror(rc));
+  }
+  return result;
+}
+
+void set_no_delay(int fd) {
+  int one = 1;
+  ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+}
+
+}  // namespace
+
+int listen_unix(const std::string& path) {
+  const sockaddr_un address = unix_address(path);
+  const int fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) throw TransportError("cannot create a Unix socket: " + system_error());
+  if (::bind(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0 ||
+      ::listen(fd, 1) != 0) {
+    const std::string error = system_error();
+    ::close(fd);
+    throw TransportError("cannot listen on Unix socket " + path + ": " + error);
+  }
+  return fd;
+}
+
+int connect_unix(const std::string& path) {
+  const sockaddr_un address = unix_address(path);
+  const int fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) throw TransportError("cannot create a Unix socket: " + system_error());
+  if (::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0) {
+    const std::string error = system_error();
+    ::close(fd);
+    throw TransportError("cannot connect to Unix socket " + path + ": " + error);
+  }
+  return fd;
+}
+
+int listen_tcp(const std::string& host, std::uint16_t port, std::uint16_t* bound_port) {
+  addrinfo* addresses = resolve(host, port, true);
+  std::string error = "no address";
+  int fd = -1;
+  for (addrinfo* a = addresses; a != nullptr && fd < 0; a = a->ai_next) {
+    fd = ::socket(a->ai_family, a->ai_socktype | SOCK_CLOEXEC, a->ai_protocol);
+    if (fd < 0) continue;
+    int one = 1;
+    ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+    if (::bind(fd, a->ai_addr, a->ai_addrlen) != 0 || ::listen(fd, 1) != 0) {
+      error = system_error();
+      ::close(fd);
+      fd = -1;
+    }
+  }
+  ::freeaddrinfo(addresses);
+  if (fd < 0) {
+    throw TransportError("cannot listen on " + host + ":" + std::to_string(port) + ": " + error);
+  }
+  if (bound_port != nullptr) {
+    sockaddr_storage address{};
+    socklen_t size = sizeof address;
+    ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &size);
+    *bound_port = address.ss_family == AF_INET6
+                      ? ntohs(reinterpret_cast<sockaddr_in6*>(&address)->sin6_port)
+                      : ntohs(reinterpret_cast<sockaddr_in*>(&address)->sin_port);
+  }
+  return fd;
+}
+
+int connect_tcp(const std::string& host, std::uint16_t port) {
+  addrinfo* addresses = resolve(host, port, false);
+  std::string error = "no address";
+  int fd = -1;
+  for (addrinfo* a = addresses; a != nullptr && fd < 0; a = a->ai_next) {
+    fd = ::socket(a->ai_family, a->ai_socktype | SOCK_CLOEXEC, a->ai_protocol);
+    if (fd < 0) continue;
+    if (::connect(fd, a->ai_addr, a->ai_addrlen) != 0) {
+      error = system_error();
+      ::close(fd);
+      fd = -1;
+    }
+  }
+  ::freeaddrinfo(addresses);
+  if (fd < 0) {
+    throw TransportError("cannot connect to " + host + ":" + std::to_string(port) + ": " + error);
+  }
+  set_no_delay(fd);
+  return fd;
+}
+
+int accept_one(int listener, const WaitPolicy& policy, const std::string& what) {
+  const auto deadline = std::chrono::steady_clock::now() + policy.timeout;
+  for (;;) {
+    pollfd p{listener, POLLIN, 0};
+    const int ready = ::poll(&p, 1, 100);
+    if (ready > 0) break;
+    if (policy.peer_alive && !policy.peer_alive()) {
+      ::close(listener);
+      throw TransportError("the peer died before connecting to " + what);
+    }
+    if (std::chrono::steady_clock::now() >= deadline) {
+      ::close(listener);
+      throw TransportError("no connection on " + what + " within the timeout");
+    }
+  }
+  const int fd = ::accept4(listener, nullptr, nullptr, SOCK_CLOEXEC);
+  const std::string error = system_error();
+  ::close(listener);
+  if (fd < 0) throw TransportError("cannot accept a connection on " + what + ": " + error);
+  sockaddr_storage address{};
+  socklen_t size = sizeof address;
+  if (::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &size) == 0 &&
+      address.ss_family != AF_UNIX) {
+    set_no_delay(fd);
+  }
+  return fd;
+}
+
+}  // namespace swarmnet

@@ -1,0 +1,52 @@
+// A Transport over a connected stream socket (Unix-domain or TCP): records are framed as a
+// 4-byte little-endian length and the bytes, gathered in a buffer and written with one system
+// call per flush (once per step), not one per record.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "transport.hpp"
+#include "wait_policy.hpp"
+
+namespace swarmnet {
+
+class SocketTransport final : public Transport {
+ public:
+  // Takes ownership of the connected socket `fd`.
+  SocketTransport(int fd, WaitPolicy policy, std::string description);
+  ~SocketTransport() override;
+
+  IoStatus send(std::span<const std::byte> record) override;
+  IoStatus try_send(std::span<const std::byte> record) override;
+  IoStatus flush() override;
+  IoStatus receive(std::vector<std::byte>& record) override;
+  void close() override;
+  [[nodiscard]] std::string describe() const override { return description_; }
+
+  // Largest record accepted from the peer; a longer announced length is corrupt framing.
+  static constexpr std::uint32_t kMaxRecordBytes = 1U << 26U;
+
+ private:
+  IoStatus wait_for(short events);
+  IoStatus fill(std::size_t bytes);
+
+  int fd_;
+  WaitPolicy policy_;
+  std::string description_;
+  std::vector<std::byte> out_;
+  std::vector<std::byte> in_;
+  std::size_t in_start_ = 0;
+  bool write_closed_ = false;
+};
+
+// Connection set-up; each throws TransportError naming the address and the system's reason.
+int listen_unix(const std::string& path);  // bound, listening socket
+int connect_unix(const std::string& path);
+int listen_tcp(const std::string& host, std::uint16_t port, std::uint16_t* bound_port = nullptr);
+int connect_tcp(const std::string& host, std::uint16_t port);
+// Waits up to `policy.timeout` for one connection on `listener`, then closes the listener.
+int accept_one(int listener, const WaitPolicy& policy, const std::string& what);
+
+}  // namespace swarmnet
