@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_command.hpp"
 #include "default_scenario.hpp"
 #include "plugin/plugin_catalog.hpp"
 #include "plugin/plugin_loader.hpp"
@@ -166,6 +167,17 @@ int main(int argc, char** argv) {
   auto* plugins = app.add_subcommand("plugins", "list plugins, or describe one");
   plugins->add_option("name", plugin_name, "plugin to describe");
 
+  std::string bench_out = "runs/bench/transport.json";
+  double bench_min_time = 0.5;
+  auto* bench = app.add_subcommand("bench", "performance benchmarks");
+  bench->require_subcommand(1);
+  auto* bench_transport = bench->add_subcommand(
+      "transport", "ring, Unix socket and TCP side by side across two processes");
+  bench_transport->add_option("--out", bench_out, "JSON results")->capture_default_str();
+  bench_transport->add_option("--min-time", bench_min_time, "seconds per benchmark")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+
   if (argc == 2 && std::string(argv[1]) == "help") {
     std::cout << app.help();
     return 0;
@@ -176,6 +188,7 @@ int main(int argc, char** argv) {
     return app.exit(error) == 0 ? 0 : kBadInput;
   }
   if (*run) return run_command(run_args, quiet, transport);
+  if (*bench_transport) return swarmnet::bench_transport_command(bench_out, bench_min_time);
   if (*net) {
     net_options.step_timeout = std::chrono::milliseconds(std::llround(net_timeout_ms));
     net_options.out = net_out;

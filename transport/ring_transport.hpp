@@ -19,14 +19,17 @@ class RingTransport final : public Transport {
         policy_(std::move(policy)),
         description_(std::move(description)) {}
 
+  // Records are staged and shown to the peer together at flush(), once per batch.
   IoStatus send(std::span<const std::byte> record) override {
-    return outgoing_.push(record, policy_);
+    return outgoing_.write(record, policy_);
   }
   IoStatus try_send(std::span<const std::byte> record) override {
     return outgoing_.try_push(record);
   }
-  // Records are visible as soon as they are pushed.
-  IoStatus flush() override { return IoStatus::ok; }
+  IoStatus flush() override {
+    outgoing_.publish();
+    return IoStatus::ok;
+  }
   IoStatus receive(std::vector<std::byte>& record) override {
     return incoming_.pop(record, policy_);
   }

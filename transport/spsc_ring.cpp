@@ -1,5 +1,7 @@
 #include "spsc_ring.hpp"
 
+#include <sched.h>
+
 #include <chrono>
 #include <cstring>
 #include <new>
@@ -61,6 +63,7 @@ bool SpscRing::attach(void* memory, std::size_t memory_bytes, SpscRing& ring, st
   ring.storage_ = static_cast<std::byte*>(memory) + sizeof(RingHeader);
   ring.mask_ = header->capacity - 1;
   ring.cached_head_ = header->head.load(std::memory_order_acquire);
+  ring.write_head_ = ring.cached_head_;
   ring.cached_tail_ = header->tail.load(std::memory_order_acquire);
   return true;
 }
@@ -79,23 +82,33 @@ void SpscRing::copy_out(std::uint64_t position, std::byte* target, std::size_t b
   if (first < bytes) std::memcpy(target + first, storage_, bytes - first);
 }
 
-IoStatus SpscRing::try_push(std::span<const std::byte> record) {
+IoStatus SpscRing::try_write(std::span<const std::byte> record) {
   if (record.size() > max_record_bytes()) return IoStatus::too_large;
   if (header_->consumer_closed.load(std::memory_order_acquire) != 0) return IoStatus::closed;
   const std::uint64_t need = padded(kLengthBytes + record.size());
-  const std::uint64_t head = header_->head.load(std::memory_order_relaxed);
-  if (head + need - cached_tail_ > header_->capacity) {
+  if (write_head_ + need - cached_tail_ > header_->capacity) {
     cached_tail_ = header_->tail.load(std::memory_order_acquire);
-    if (head + need - cached_tail_ > header_->capacity) return IoStatus::would_block;
+    if (write_head_ + need - cached_tail_ > header_->capacity) return IoStatus::would_block;
   }
   const auto length = static_cast<std::uint32_t>(record.size());
-  copy_in(head, reinterpret_cast<const std::byte*>(&length), kLengthBytes);
-  copy_in(head + kLengthBytes, record.data(), record.size());
-  // seq_cst, not release: the store must be ordered before the load of consumer_sleeping in
-  // wake_consumer(), or a consumer going to sleep could miss this record.
-  header_->head.store(head + need, std::memory_order_seq_cst);
-  wake_consumer();
+  copy_in(write_head_, reinterpret_cast<const std::byte*>(&length), kLengthBytes);
+  copy_in(write_head_ + kLengthBytes, record.data(), record.size());
+  write_head_ += need;
   return IoStatus::ok;
+}
+
+void SpscRing::publish() {
+  if (header_->head.load(std::memory_order_relaxed) == write_head_) return;
+  // seq_cst, not release: the store must be ordered before the load of consumer_sleeping in
+  // wake_consumer(), or a consumer going to sleep could miss these records.
+  header_->head.store(write_head_, std::memory_order_seq_cst);
+  wake_consumer();
+}
+
+IoStatus SpscRing::try_push(std::span<const std::byte> record) {
+  const IoStatus status = try_write(record);
+  if (status == IoStatus::ok) publish();
+  return status;
 }
 
 IoStatus SpscRing::try_pop(std::vector<std::byte>& record) {
@@ -145,6 +158,12 @@ IoStatus wait_for(Attempt&& attempt, std::atomic<std::uint32_t>& event,
     cpu_relax();
     status = attempt();
   }
+  // On a machine with fewer free cores than runnable threads, spinning only delays the peer we
+  // wait for: give the core away a few times before sleeping.
+  for (std::uint32_t i = 0; status == IoStatus::would_block && i < policy.yield_iterations; ++i) {
+    sched_yield();
+    status = attempt();
+  }
   if (status != IoStatus::would_block) return status;
   // The clock bounds how long we wait; it never reaches a result.
   const auto deadline = std::chrono::steady_clock::now() + policy.timeout;
@@ -167,9 +186,18 @@ IoStatus wait_for(Attempt&& attempt, std::atomic<std::uint32_t>& event,
 
 }  // namespace
 
-IoStatus SpscRing::push(std::span<const std::byte> record, const WaitPolicy& policy) {
-  return wait_for([&] { return try_push(record); }, header_->space_event,
+IoStatus SpscRing::write(std::span<const std::byte> record, const WaitPolicy& policy) {
+  IoStatus status = try_write(record);
+  if (status != IoStatus::would_block) return status;
+  publish();  // the consumer can only make room by reading what is staged
+  return wait_for([&] { return try_write(record); }, header_->space_event,
                   header_->producer_sleeping, policy);
+}
+
+IoStatus SpscRing::push(std::span<const std::byte> record, const WaitPolicy& policy) {
+  const IoStatus status = write(record, policy);
+  if (status == IoStatus::ok) publish();
+  return status;
 }
 
 IoStatus SpscRing::pop(std::vector<std::byte>& record, const WaitPolicy& policy) {
@@ -178,6 +206,7 @@ IoStatus SpscRing::pop(std::vector<std::byte>& record, const WaitPolicy& policy)
 }
 
 void SpscRing::close_producer() {
+  publish();
   header_->producer_closed.store(1, std::memory_order_seq_cst);
   header_->data_event.fetch_add(1, std::memory_order_release);
   futex_wake_all(header_->data_event);

@@ -70,7 +70,12 @@ class SpscRing {
     return static_cast<std::size_t>(header_->capacity) - kLengthBytes;
   }
 
-  // Producer side.
+  // Producer side. write() stages a record without showing it to the consumer; publish() shows
+  // every staged record at once, so a batch costs one shared-index store and at most one wake-up
+  // instead of one per record. push() is write() then publish().
+  IoStatus try_write(std::span<const std::byte> record);
+  IoStatus write(std::span<const std::byte> record, const WaitPolicy& policy);
+  void publish();
   IoStatus try_push(std::span<const std::byte> record);
   IoStatus push(std::span<const std::byte> record, const WaitPolicy& policy);
   void close_producer();
@@ -97,6 +102,7 @@ class SpscRing {
   // ring is full (producer) or empty (consumer), so the common case touches no shared line.
   std::uint64_t cached_tail_ = 0;
   std::uint64_t cached_head_ = 0;
+  std::uint64_t write_head_ = 0;  // producer: end of staged records, published or not
 };
 
 }  // namespace swarmnet

@@ -93,11 +93,14 @@ TEST(StepChannel, ResultAndReportRoundTrip) {
 }
 
 TEST(StepChannel, MalformedRecordsAreNamed) {
-  InprocChannel link(std::uint64_t{1} << 16);
+  WaitPolicy impatient;
+  impatient.timeout = std::chrono::seconds(5);  // a mistake here fails fast instead of hanging
+  InprocChannel link(std::uint64_t{1} << 16, impatient);
   StepChannel network(link.network_end(), "the robot half");
   std::vector<std::byte> raw;
   RecordWriter(raw).put(std::uint32_t{99});
   ASSERT_EQ(link.robot_end().send(raw), IoStatus::ok);
+  ASSERT_EQ(link.robot_end().flush(), IoStatus::ok);
   StepBatch batch;
   bool finished = false;
   auto r = network.receive_batch(batch, finished);
@@ -108,12 +111,14 @@ TEST(StepChannel, MalformedRecordsAreNamed) {
   // A step_begin that is too short.
   RecordWriter(raw).put(static_cast<std::uint32_t>(RecordType::step_begin)).put(std::uint64_t{1});
   ASSERT_EQ(link.robot_end().send(raw), IoStatus::ok);
+  ASSERT_EQ(link.robot_end().flush(), IoStatus::ok);
   r = network.receive_batch(batch, finished);
   EXPECT_NE(r.error.find("malformed step_begin record"), std::string::npos) << r.error;
 
   // A delivery where a step_begin is due.
   RecordWriter(raw).put(static_cast<std::uint32_t>(RecordType::delivery));
   ASSERT_EQ(link.robot_end().send(raw), IoStatus::ok);
+  ASSERT_EQ(link.robot_end().flush(), IoStatus::ok);
   r = network.receive_batch(batch, finished);
   EXPECT_NE(r.error.find("sent a delivery record where step_begin or finish was expected"),
             std::string::npos)

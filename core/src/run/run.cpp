@@ -1,5 +1,6 @@
 #include "run/run.hpp"
 
+#include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
 #include <chrono>
@@ -81,6 +82,19 @@ nlohmann::ordered_json controller_metrics_json(const RobotWorld& world) {
                      {"max", stats.count > 0 ? nlohmann::ordered_json(stats.max) : nullptr}};
   }
   return metrics;
+}
+
+// Removes files that other processes left under a temporary name (AtomicFile's ".partial-PID")
+// in `dir`; this process's own (the log being written) stay.
+void remove_partial_files(const std::filesystem::path& dir) {
+  const std::string own = ".partial-" + std::to_string(::getpid());
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.find(".partial-") != std::string::npos && !name.ends_with(own)) {
+      std::filesystem::remove(entry.path(), ec);
+    }
+  }
 }
 
 void handshake(const Scenario& scenario, const std::filesystem::path& run_dir,
@@ -276,6 +290,8 @@ RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
     // Last, so that a summary.json is present only when every other output is complete.
     write_file_atomically(outcome.dir / kSummaryFile, s.dump(2) + "\n");
   } catch (const std::exception& error) {
+    // Both halves have stopped by now; a network half that was killed could not remove its own.
+    remove_partial_files(outcome.dir);
     log.line(std::string("run failed: ") + error.what());
     try {
       log.commit();
