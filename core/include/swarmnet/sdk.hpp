@@ -17,3 +17,4 @@
 #include "swarmnet/spatial_grid.hpp"
 #include "swarmnet/units.hpp"
 #include "swarmnet/vector.hpp"
+#include "swarmnet/wifi_ofdm.hpp"

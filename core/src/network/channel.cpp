@@ -26,9 +26,10 @@ Channel::Channel(const Scenario& scenario, PropagationChain chain, Scheduler& sc
                  std::size_t node_count)
     : chain_(std::move(chain)),
       scheduler_(scheduler),
-      tx_power_dbm_(scenario.network.phy.tx_power_dbm),
-      cutoff_m_(cutoff_distance_m(chain_, scenario.network.phy.tx_power_dbm,
-                                  audibility_threshold_dbm(scenario.network.phy))),
+      tx_power_dbm_(scenario.network.phy.tx_power_dbm + scenario.network.phy.tx_gain_db),
+      rx_gain_db_(scenario.network.phy.rx_gain_db),
+      cutoff_m_(cutoff_distance_m(chain_, tx_power_dbm_,
+                                  audibility_threshold_dbm(scenario.network.phy) - rx_gain_db_)),
       use_grid_(scenario.network.channel.cutoff && std::isfinite(cutoff_m_)),
       phys_(node_count, nullptr),
       positions_(node_count, Vec2::Zero()),
@@ -101,7 +102,7 @@ void Channel::transmit(NodeId transmitter, Frame frame, SimTime duration) {
     const double distance_m = (rx_position - tx_position).norm();
     if (use_grid_ && distance_m >= cutoff_m_) continue;
     const RadioLink link{transmitter, receiver, tx_position, rx_position, distance_m, uid};
-    const double power_dbm = chain_.rx_power_dbm(tx_power_dbm_, link);
+    const double power_dbm = chain_.rx_power_dbm(tx_power_dbm_, link) + rx_gain_db_;
     Phy* rx_phy = phys_[receiver];
     if (!rx_phy->audible(power_dbm)) continue;
     const SimTime delay = propagation_delay(distance_m);

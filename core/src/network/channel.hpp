@@ -1,7 +1,8 @@
 // The wireless channel: fans a transmission out to the nodes that can hear it.
 //
 // For each candidate receiver (ascending node id, the transmitter excluded) it computes the
-// received power through the propagation chain, starting at the PHY's tx power, and, if the
+// received power through the propagation chain, starting at the PHY's tx power plus the transmit
+// antenna gain, then adds the receive antenna gain, and, if the
 // receiving PHY finds the signal audible, schedules the signal's start at now + distance / c and
 // its end one frame duration later. The transmitter's PHY ends its transmission at now + duration.
 // Powers and delays are fixed when the frame is sent (positions are constant within a step).
@@ -60,7 +61,8 @@ class Channel {
 
   PropagationChain chain_;
   Scheduler& scheduler_;
-  double tx_power_dbm_;
+  double tx_power_dbm_;  // transmit power plus transmit antenna gain
+  double rx_gain_db_;
   double cutoff_m_;
   bool use_grid_;
   std::vector<Phy*> phys_;

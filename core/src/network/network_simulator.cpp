@@ -40,7 +40,13 @@ NetworkSimulator::NetworkSimulator(const Scenario& scenario, PluginLoader& loade
       trace_(packet_trace),
       channel_(scenario, PropagationChain(scenario, loader), scheduler_, scenario.robots.count),
       application_(scenario.robots.count, metrics_, trace_, packet_uids_) {
-  const NodeServices services{scheduler_, channel_, application_, trace_, metrics_, packet_uids_};
+  const NodeServices services{scheduler_,
+                              channel_,
+                              application_,
+                              trace_,
+                              metrics_,
+                              packet_uids_,
+                              derive_seed(scenario.seed, {hash_name("phy")})};
   PluginChoice mac = scenario.network.mac;
   PluginChoice routing = scenario.network.routing;
   mac.kind = PluginKind::mac;  // the seed keys name the kind, whatever the struct was filled with

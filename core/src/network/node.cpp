@@ -2,13 +2,15 @@
 
 #include <utility>
 
+#include "swarmnet/random.hpp"
+
 namespace swarmnet {
 
 Node::Node(NodeId id, const NodeServices& services, const PhyConfig& phy_config,
            PluginInstance<Mac> mac, PluginInstance<Routing> routing)
     : id_(id),
       services_(services),
-      phy_(phy_config, *this),
+      phy_(phy_config, *this, &services.scheduler, derive_seed(services.phy_seed, {id})),
       mac_port_(*this),
       routing_port_(*this),
       mac_(std::move(mac)),
@@ -23,6 +25,12 @@ void Node::drop(const Packet& packet, DropReason reason) {
   services_.metrics.dropped(reason);
   services_.trace.record(services_.scheduler.now(), PacketEvent::drop, id_, packet,
                          to_string(reason));
+}
+
+void Node::phy_collision(const Frame& frame) {
+  if (frame.receiver == id_ || frame.receiver == kBroadcast) {
+    services_.metrics.mac_count("collisions", 1);
+  }
 }
 
 // ---- MacPort ----------------------------------------------------------------------------------

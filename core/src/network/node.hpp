@@ -35,6 +35,7 @@ struct NodeServices {
   PacketTraceWriter& trace;
   NetworkMetrics& metrics;
   PacketUidSource& packet_uids;
+  std::uint64_t phy_seed = 0;  // node i's PHY draws from derive_seed(phy_seed, {i})
 };
 
 class Node final : private PhyListener {
@@ -107,6 +108,7 @@ class Node final : private PhyListener {
   void phy_receive_error() override { mac_->on_receive_error(); }
   void phy_medium_busy() override { mac_->on_medium_busy(); }
   void phy_medium_idle() override { mac_->on_medium_idle(); }
+  void phy_collision(const Frame& frame) override;
 
   NodeId id_;
   NodeServices services_;

@@ -1,10 +1,24 @@
 #include "network/phy.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
+#include "network/nist_error_rate.hpp"
+#include "swarmnet/random.hpp"
+#include "swarmnet/wifi_ofdm.hpp"
+
 namespace swarmnet {
+
+namespace {
+
+// ns-3's PreambleDetectionDuration.
+constexpr SimTime kDetectionWindow{4000};
+// A lost frame counts as a collision when it would have survived alone with at least this.
+constexpr double kCollisionAloneSuccess = 0.9;
+
+}  // namespace
 
 const char* to_string(Phy::State state) {
   switch (state) {
@@ -14,21 +28,70 @@ const char* to_string(Phy::State state) {
       return "transmitting";
     case Phy::State::receiving:
       return "receiving";
+    case Phy::State::busy:
+      return "busy";
   }
   return "?";
 }
 
-Phy::Phy(const PhyConfig& config, PhyListener& listener) : config_(config), listener_(listener) {}
+double noise_floor_dbm(const PhyConfig& config) {
+  return -174.0 + 10.0 * std::log10(config.bandwidth_hz) + config.noise_figure_db;
+}
+
+double audibility_threshold_dbm(const PhyConfig& config) {
+  if (config.model == PhyModel::sinr) {
+    return noise_floor_dbm(config) + config.interference_floor_db;
+  }
+  return config.rx_sensitivity_dbm;
+}
+
+Phy::Phy(const PhyConfig& config, PhyListener& listener, Scheduler* scheduler, std::uint64_t seed)
+    : config_(config),
+      listener_(listener),
+      scheduler_(scheduler),
+      seed_(seed),
+      noise_mw_(dbm_to_milliwatts(noise_floor_dbm(config))),
+      audible_dbm_(audibility_threshold_dbm(config)),
+      energy_detection_mw_(dbm_to_milliwatts(config.energy_detection_dbm)) {
+  if (sinr_model() && scheduler_ == nullptr) {
+    throw std::logic_error("PHY: the sinr model needs a scheduler");
+  }
+}
 
 Phy::State Phy::state() const {
   if (transmitting_) return State::transmitting;
-  return arrivals_.empty() ? State::idle : State::receiving;
+  if (!sinr_model()) return arrivals_.empty() ? State::idle : State::receiving;
+  if (lock_) return State::receiving;
+  return medium_busy() ? State::busy : State::idle;
 }
 
-double audibility_threshold_dbm(const PhyConfig& config) { return config.rx_sensitivity_dbm; }
+double Phy::total_mw() const {
+  double total = 0.0;
+  for (const Arrival& a : arrivals_) total += a.rx_power_mw;
+  return total;
+}
 
-bool Phy::audible(double rx_power_dbm) const {
-  return rx_power_dbm >= audibility_threshold_dbm(config_);
+bool Phy::medium_busy() const {
+  if (transmitting_) return true;
+  if (!sinr_model()) return !arrivals_.empty();
+  if (lock_) return true;
+  const bool strong_frame = std::any_of(arrivals_.begin(), arrivals_.end(), [&](const Arrival& a) {
+    return a.rx_power_dbm >= config_.cca_threshold_dbm;
+  });
+  return strong_frame || (!arrivals_.empty() && total_mw() >= energy_detection_mw_);
+}
+
+bool Phy::audible(double rx_power_dbm) const { return rx_power_dbm >= audible_dbm_; }
+
+void Phy::report_busy_change() {
+  const bool busy = medium_busy();
+  if (busy == reported_busy_) return;
+  reported_busy_ = busy;
+  if (busy) {
+    listener_.phy_medium_busy();
+  } else {
+    listener_.phy_medium_idle();
+  }
 }
 
 void Phy::start_transmission() {
@@ -36,39 +99,148 @@ void Phy::start_transmission() {
     throw std::logic_error("PHY: transmit() while the previous frame is still on the air");
   }
   transmitting_ = true;
+  reported_busy_ = true;
+  if (sinr_model()) {
+    lock_.reset();  // half duplex: the frame being received is lost
+    if (detection_timer_ != kNoTimer) scheduler_->cancel(detection_timer_);
+    detection_timer_ = kNoTimer;
+    candidates_.clear();
+  }
 }
 
 void Phy::end_transmission() {
   transmitting_ = false;
+  reported_busy_ = medium_busy();
   listener_.phy_transmit_end();
 }
 
 void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm) {
-  const bool was_busy = medium_busy();
-  arrivals_.push_back(Arrival{frame_uid, rx_power_dbm});
-  if (!was_busy) listener_.phy_medium_busy();
+  if (!sinr_model()) {
+    arrivals_.push_back(Arrival{frame_uid, rx_power_dbm});
+    report_busy_change();
+    return;
+  }
+  const SimTime now = scheduler_->now();
+  arrivals_.push_back(Arrival{frame_uid, rx_power_dbm, dbm_to_milliwatts(rx_power_dbm), now});
+  if (lock_) {
+    note_interference_change();
+  } else if (!transmitting_) {
+    candidates_.push_back(frame_uid);
+    if (detection_timer_ == kNoTimer) {
+      detection_timer_ = scheduler_->schedule_in(kDetectionWindow, [this] {
+        detection_timer_ = kNoTimer;
+        end_detection_window();
+      });
+    }
+  }
+  report_busy_change();
+}
+
+void Phy::end_detection_window() {
+  std::vector<std::uint64_t> candidates;
+  candidates.swap(candidates_);
+  if (transmitting_ || lock_) return;
+  const Arrival* best = nullptr;
+  for (const std::uint64_t uid : candidates) {
+    const auto it = std::find_if(arrivals_.begin(), arrivals_.end(),
+                                 [uid](const Arrival& a) { return a.frame_uid == uid; });
+    if (it == arrivals_.end()) continue;
+    if (best == nullptr || it->rx_power_mw > best->rx_power_mw) best = &*it;
+  }
+  if (best == nullptr || best->rx_power_dbm < config_.cca_threshold_dbm) return;
+  const double interference = total_mw() - best->rx_power_mw;
+  const double sinr_db = 10.0 * std::log10(best->rx_power_mw / (noise_mw_ + interference));
+  if (sinr_db < config_.preamble_snr_db) return;
+  lock_ = Lock{best->frame_uid, best->rx_power_mw, best->start, {}};
+  lock_->interference_mw.emplace_back(scheduler_->now(), std::max(interference, 0.0));
+  report_busy_change();
+}
+
+void Phy::note_interference_change() {
+  const double interference = std::max(total_mw() - lock_->power_mw, 0.0);
+  lock_->interference_mw.emplace_back(scheduler_->now(), interference);
 }
 
 void Phy::signal_end(const Frame& frame, double rx_power_dbm) {
   const auto it = std::find_if(arrivals_.begin(), arrivals_.end(),
                                [&](const Arrival& a) { return a.frame_uid == frame.uid; });
   if (it == arrivals_.end()) return;  // not tracked: nothing to decide
-  const Arrival arrival = *it;
   arrivals_.erase(it);
-  const bool received = decide(arrival);
-  // The medium goes idle before the frame goes up, as a radio's carrier sense drops at the end of
-  // the frame and the MAC then processes it.
-  if (!medium_busy()) listener_.phy_medium_idle();
-  if (received) {
-    // No noise or interference is modelled: the SINR is unbounded.
-    listener_.phy_receive(frame, RxInfo{rx_power_dbm, std::numeric_limits<double>::infinity()});
-  } else {
-    listener_.phy_receive_error();
+
+  if (!sinr_model()) {
+    const bool received = rx_power_dbm >= config_.rx_sensitivity_dbm;
+    // The medium goes idle before the frame goes up, as a radio's carrier sense drops at the end
+    // of the frame and the MAC then processes it.
+    report_busy_change();
+    if (received) {
+      // No noise or interference is modelled: the SINR is unbounded.
+      listener_.phy_receive(frame, RxInfo{rx_power_dbm, std::numeric_limits<double>::infinity()});
+    } else {
+      listener_.phy_receive_error();
+    }
+    return;
   }
+
+  candidates_.erase(std::remove(candidates_.begin(), candidates_.end(), frame.uid),
+                    candidates_.end());
+  if (lock_ && lock_->frame_uid == frame.uid) {
+    finish_lock(frame, rx_power_dbm);
+    return;
+  }
+  if (lock_) note_interference_change();
+  report_busy_change();
 }
 
-bool Phy::decide(const Arrival& arrival) const {
-  return arrival.rx_power_dbm >= config_.rx_sensitivity_dbm;
+double Phy::success_probability(const Lock& lock, const Frame& frame, SimTime end,
+                                bool with_interference) const {
+  const ofdm::Mode header_mode = ofdm::kModes[0];
+  const ofdm::Mode payload_mode = ofdm::mode_at_most(frame.bitrate_bps);
+  const SimTime header_start = lock.start + ofdm::kPreambleDuration;
+  const SimTime payload_start = header_start + ofdm::kHeaderDuration;
+  const auto overlap_s = [](SimTime a0, SimTime a1, SimTime b0, SimTime b1) {
+    const SimTime lo = std::max(a0, b0);
+    const SimTime hi = std::min(a1, b1);
+    return hi > lo ? to_seconds(hi - lo) : 0.0;
+  };
+  double success = 1.0;
+  const auto& chunks = lock.interference_mw;
+  for (std::size_t i = 0; i < chunks.size(); ++i) {
+    const SimTime from = chunks[i].first;
+    const SimTime to = i + 1 < chunks.size() ? chunks[i + 1].first : end;
+    if (to <= from) continue;
+    const double interference = with_interference ? chunks[i].second : 0.0;
+    const double sinr = lock.power_mw / (noise_mw_ + interference);
+    const double header_s = overlap_s(from, to, header_start, payload_start);
+    const double payload_s = overlap_s(from, to, payload_start, end);
+    success *= chunk_success_rate(header_mode, sinr, header_s * header_mode.rate_bps);
+    success *= chunk_success_rate(payload_mode, sinr, payload_s * payload_mode.rate_bps);
+  }
+  return success;
+}
+
+void Phy::finish_lock(const Frame& frame, double rx_power_dbm) {
+  const Lock lock = std::move(*lock_);
+  lock_.reset();
+  const SimTime now = scheduler_->now();
+  const double p_success = success_probability(lock, frame, now, true);
+  RandomStream draw(derive_seed(seed_, {frame.uid}));
+  const bool received = draw.uniform() < p_success;
+  // SINR reported to the MAC: over the worst chunk.
+  double worst_interference = 0.0;
+  for (const auto& chunk : lock.interference_mw) {
+    worst_interference = std::max(worst_interference, chunk.second);
+  }
+  const double sinr_db = 10.0 * std::log10(lock.power_mw / (noise_mw_ + worst_interference));
+  report_busy_change();
+  if (received) {
+    listener_.phy_receive(frame, RxInfo{rx_power_dbm, sinr_db});
+    return;
+  }
+  if (worst_interference > 0.0 &&
+      success_probability(lock, frame, now, false) >= kCollisionAloneSuccess) {
+    listener_.phy_collision(frame);
+  }
+  listener_.phy_receive_error();
 }
 
 }  // namespace swarmnet

@@ -1,22 +1,50 @@
 // A node's PHY: its transmit/receive state and the decision whether an arriving frame is decoded.
+// Two reception models (scenario key network.phy.model):
 //
-// This version is a *threshold PHY*: a frame is received if and only if its received power is at
-// least rx_sensitivity_dbm. Frames that overlap in time do not interfere with each other, and a
-// node also receives while it transmits (no half-duplex loss). Signals below the sensitivity are
-// ignored entirely (they neither raise the carrier sense nor interfere). SINR-based reception
-// with interference, noise, capture and half-duplex loss replaces decide() in a later issue; the
-// state machine, the arrival list and the listener interface below are the slots it fills.
+// threshold (the default; the disk/ideal_mac quickstart): a frame is received if and only if its
+//   received power is at least rx_sensitivity_dbm. Overlapping frames do not interfere, a node
+//   receives while it transmits, signals below the sensitivity are ignored entirely.
 //
-// Carrier sense: medium_busy() is true while the node transmits or while at least one frame above
-// the sensitivity is arriving. The listener's medium_busy/medium_idle callbacks report the
-// transitions of medium_busy() caused by arriving signals; the start and end of the node's own
-// transmission are reported by transmit() itself and by transmit_end() instead (a MAC that
-// finishes a transmission while a frame is still arriving asks medium_busy()).
+// sinr: 802.11a OFDM reception as ns-3.37's YansWifiPhy does it with its defaults.
+//   - Noise floor N = -174 dBm/Hz + 10 log10(bandwidth_hz) + noise_figure_db (-93.97 dBm at
+//     20 MHz, 7 dB). Signals weaker than N + interference_floor_db (default -10 dB) are ignored
+//     (DESIGN.md section 7): the channel does not even deliver them, and its cutoff distance is
+//     computed against that floor. Every other arriving signal adds to the interference.
+//   - Preamble detection: a signal arriving while the PHY is neither transmitting nor locked on a
+//     frame opens a 4 us detection window (ns-3's PreambleDetectionDuration); signals arriving in
+//     the window join it. At its end the strongest of them still arriving is detected if its
+//     power is at least cca_threshold_dbm (-82 dBm) and its SINR at least preamble_snr_db (4 dB;
+//     ns-3's ThresholdPreambleDetectionModel). The PHY then locks on it until its last bit.
+//   - Capture: none (ns-3's default, no frame-capture model). A node locked on a frame treats
+//     every later frame, however strong, as interference; a frame arriving while the node
+//     transmits is lost, and a transmission that starts while locked aborts the reception.
+//   - Success: interference is the sum of the other signals' powers; the locked frame's time is
+//     cut into chunks wherever that sum changes (ns-3's InterferenceHelper). The 16 us preamble
+//     is not scored; the 4 us PLCP header is scored at 6 Mbit/s (BPSK 1/2) and the rest of the
+//     frame at the frame's rate (network/nist_error_rate.hpp), bits = rate x chunk duration. The
+//     frame is received with probability prod over chunks of chunk_success_rate, drawn from a
+//     stream derived from (node seed, frame uid). A rate that is not an 802.11a rate is read as
+//     the fastest 802.11a rate below it.
+//   - Collisions: a lost locked frame addressed to this node (or broadcast) whose success
+//     probability without interference would have been at least 0.9 counts as a collision
+//     (listener->phy_collision; the node counts those addressed to it or broadcast as
+//     mac.collisions).
+//   - Carrier sense: medium_busy() while transmitting, while locked on a frame, while any
+//     arriving signal alone reaches cca_threshold_dbm, or while the total arriving power reaches
+//     energy_detection_dbm (-62 dBm, CCA-ED).
+//
+// Both models: medium_busy/medium_idle callbacks report the transitions of medium_busy() caused
+// by arriving signals; the start and end of the node's own transmission are reported by
+// transmit() itself and by transmit_end() instead (a MAC that finishes a transmission asks
+// medium_busy()). At the end of a frame the medium-idle callback (if any) comes before the
+// receive / receive-error callback.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "network/scheduler.hpp"
 #include "scenario/scenario.hpp"
 #include "swarmnet/mac.hpp"
 #include "swarmnet/packet.hpp"
@@ -31,25 +59,35 @@ class PhyListener {
   virtual void phy_receive_error() = 0;
   virtual void phy_medium_busy() = 0;
   virtual void phy_medium_idle() = 0;
+  // sinr model: a locked frame was lost to interference (see above); before phy_receive_error.
+  virtual void phy_collision(const Frame& /*frame*/) {}
 
  protected:
   ~PhyListener() = default;
 };
 
-// The weakest signal a PHY with `config` takes any notice of. The channel's cutoff distance is
-// computed against it, so that skipping nodes beyond the cutoff changes nothing. Threshold PHY:
-// the sensitivity. (With SINR reception, signals below the sensitivity still interfere and this
-// becomes an interference floor below the noise.)
+// Thermal noise plus noise figure over the configured bandwidth, in dBm.
+double noise_floor_dbm(const PhyConfig& config);
+
+// The weakest signal (at the receiver, after its antenna gain) a PHY with `config` takes any
+// notice of. The channel's cutoff distance is computed against it, so that skipping nodes beyond
+// the cutoff changes nothing. Threshold model: the sensitivity; sinr model: the noise floor plus
+// interference_floor_db.
 double audibility_threshold_dbm(const PhyConfig& config);
 
 class Phy {
  public:
-  enum class State : std::uint8_t { idle, transmitting, receiving };
+  enum class State : std::uint8_t { idle, transmitting, receiving, busy };
 
-  Phy(const PhyConfig& config, PhyListener& listener);
+  // `scheduler` is required by the sinr model (preamble detection window); `seed` seeds its
+  // reception draws.
+  Phy(const PhyConfig& config, PhyListener& listener, Scheduler* scheduler = nullptr,
+      std::uint64_t seed = 0);
 
+  // idle; transmitting; receiving (threshold: a frame is arriving; sinr: locked on a frame);
+  // busy (sinr: not locked, but carrier sense says busy).
   [[nodiscard]] State state() const;
-  [[nodiscard]] bool medium_busy() const { return transmitting_ || !arrivals_.empty(); }
+  [[nodiscard]] bool medium_busy() const;
 
   // Whether a signal of this power concerns this PHY at all; the channel schedules nothing for
   // signals that do not.
@@ -68,14 +106,40 @@ class Phy {
   struct Arrival {
     std::uint64_t frame_uid;
     double rx_power_dbm;
+    double rx_power_mw = 0.0;
+    SimTime start{};
   };
-  // The reception decision for a frame whose signal just ended.
-  [[nodiscard]] bool decide(const Arrival& arrival) const;
+  // sinr: the frame the PHY is locked on, and the interference it has seen since.
+  struct Lock {
+    std::uint64_t frame_uid;
+    double power_mw;
+    SimTime start;
+    std::vector<std::pair<SimTime, double>> interference_mw;  // from each time on
+  };
+
+  [[nodiscard]] bool sinr_model() const { return config_.model == PhyModel::sinr; }
+  [[nodiscard]] double total_mw() const;
+  void report_busy_change();
+  void end_detection_window();
+  void note_interference_change();
+  void finish_lock(const Frame& frame, double rx_power_dbm);
+  [[nodiscard]] double success_probability(const Lock& lock, const Frame& frame, SimTime end,
+                                           bool with_interference) const;
 
   PhyConfig config_;
   PhyListener& listener_;
+  Scheduler* scheduler_;
+  std::uint64_t seed_;
+  double noise_mw_;
+  double audible_dbm_;
+  double energy_detection_mw_;
   bool transmitting_ = false;
+  bool reported_busy_ = false;
   std::vector<Arrival> arrivals_;  // signals currently arriving, in arrival order
+  // sinr state
+  TimerId detection_timer_ = kNoTimer;
+  std::vector<std::uint64_t> candidates_;  // frames whose preamble started in the window
+  std::optional<Lock> lock_;
 };
 
 const char* to_string(Phy::State state);

@@ -46,9 +46,22 @@ struct RobotsConfig {
   std::vector<PluginChoice> controllers;  // run in this order on every step
 };
 
+enum class PhyModel : std::uint8_t { threshold, sinr };
+
+// The radio of every node (network/phy.hpp describes both reception models). Defaults of the
+// sinr model's keys are ns-3.37's YansWifiPhy defaults for 802.11a.
 struct PhyConfig {
   double tx_power_dbm = 16.0206;
-  double rx_sensitivity_dbm = -96.0;  // frames weaker than this are not received
+  double rx_sensitivity_dbm = -96.0;  // threshold model: frames weaker than this are not received
+  PhyModel model = PhyModel::threshold;
+  double tx_gain_db = 0.0;
+  double rx_gain_db = 0.0;
+  double bandwidth_hz = 20.0e6;
+  double noise_figure_db = 7.0;
+  double energy_detection_dbm = -62.0;   // CCA-ED: total energy that makes the medium busy
+  double cca_threshold_dbm = -82.0;      // weakest frame whose preamble is detected (and sensed)
+  double preamble_snr_db = 4.0;          // SINR a preamble needs to be detected
+  double interference_floor_db = -10.0;  // signals below noise floor + this are ignored
 };
 
 struct ChannelConfig {
@@ -64,7 +77,7 @@ struct NetworkConfig {
 };
 
 struct OutputConfig {
-  std::filesystem::path dir;        // resolved: --out, else output.dir, else runs/<name>-seed<seed>
+  std::filesystem::path dir;  // resolved: --out, else output.dir, else runs/<name>-seed<seed>
   bool packet_trace = true;
   bool mobility_trace = true;
   double mobility_interval_s = 0.0;  // 0: every step

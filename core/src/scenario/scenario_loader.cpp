@@ -100,6 +100,17 @@ Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>
   s.network.propagation = plugin_list("network.propagation", network["propagation"].size());
   s.network.phy.tx_power_dbm = network["phy"]["tx_power_dbm"].as<double>();
   s.network.phy.rx_sensitivity_dbm = network["phy"]["rx_sensitivity_dbm"].as<double>();
+  const YAML::Node phy = network["phy"];
+  s.network.phy.model =
+      phy["model"].as<std::string>() == "sinr" ? PhyModel::sinr : PhyModel::threshold;
+  s.network.phy.tx_gain_db = phy["tx_gain_db"].as<double>();
+  s.network.phy.rx_gain_db = phy["rx_gain_db"].as<double>();
+  s.network.phy.bandwidth_hz = phy["bandwidth_hz"].as<double>();
+  s.network.phy.noise_figure_db = phy["noise_figure_db"].as<double>();
+  s.network.phy.energy_detection_dbm = phy["energy_detection_dbm"].as<double>();
+  s.network.phy.cca_threshold_dbm = phy["cca_threshold_dbm"].as<double>();
+  s.network.phy.preamble_snr_db = phy["preamble_snr_db"].as<double>();
+  s.network.phy.interference_floor_db = phy["interference_floor_db"].as<double>();
   s.network.channel.cutoff = network["channel"]["cutoff"].as<bool>();
   s.network.mac = plugin("network.mac");
   s.network.routing = plugin("network.routing");

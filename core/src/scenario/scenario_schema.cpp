@@ -176,10 +176,32 @@ const KeySpec& scenario_schema() {
                       "Propagation models, chained in this order (e.g. path loss, then fading).")
           .at_least_items(1).need(),
       map_key("phy", "The radio every node has.", {
+        choice_key("model", {"threshold", "sinr"},
+                   "threshold: a frame is received iff its power reaches rx_sensitivity_dbm; "
+                   "sinr: 802.11a OFDM reception with noise, interference and SINR-based errors.")
+            .defaults("threshold"),
         real_key("tx_power_dbm", "dBm", "Transmit power (16.0206 dBm = 40 mW).")
             .between(-100, 100).defaults("16.0206"),
-        real_key("rx_sensitivity_dbm", "dBm", "Frames received weaker than this are not decoded.")
+        real_key("rx_sensitivity_dbm", "dBm", "threshold model: frames received weaker than this "
+                                              "are not decoded.")
             .between(-200, 100).defaults("-96"),
+        real_key("tx_gain_db", "dB", "Transmit antenna gain.").between(-100, 100).defaults("0"),
+        real_key("rx_gain_db", "dB", "Receive antenna gain.").between(-100, 100).defaults("0"),
+        real_key("bandwidth_hz", "Hz", "sinr model: channel bandwidth, for the thermal noise.")
+            .above(0).defaults("20000000"),
+        real_key("noise_figure_db", "dB", "sinr model: receiver noise figure.")
+            .between(0, 100).defaults("7"),
+        real_key("energy_detection_dbm", "dBm", "sinr model: total received energy at which the "
+                                                "medium is busy (CCA-ED).")
+            .between(-200, 100).defaults("-62"),
+        real_key("cca_threshold_dbm", "dBm", "sinr model: weakest frame whose preamble is "
+                                             "detected; such a frame also makes the medium busy.")
+            .between(-200, 100).defaults("-82"),
+        real_key("preamble_snr_db", "dB", "sinr model: SINR a preamble needs to be detected.")
+            .between(-100, 100).defaults("4"),
+        real_key("interference_floor_db", "dB", "sinr model: signals weaker than noise floor + "
+                                                "this are ignored (neither interfere nor sensed).")
+            .between(-100, 0).defaults("-10"),
       }),
       map_key("channel", "The shared medium.", {
         boolean_key("cutoff", "Visit only nodes that could possibly hear a frame (exact; turn off "

@@ -1,0 +1,320 @@
+#include "dcf80211.hpp"
+
+#include <utility>
+
+#include "frame_format.hpp"
+
+namespace swarmnet::dcf80211 {
+
+PluginInfo Dcf80211::info() {
+  return PluginInfo{
+      "dcf80211",
+      "1.0.0",
+      "IEEE 802.11a DCF: CSMA/CA with binary exponential backoff, ACKs, retries, RTS/CTS, NAV",
+      "The 802.11 Distributed Coordination Function over 802.11a OFDM timing, with the defaults "
+      "of ns-3.37's 802.11a ad hoc MAC (AdhocWifiMac, ConstantRateWifiManager at 6 Mbit/s).\n"
+      "Timing: slot 9 us, SIFS 16 us, DIFS = SIFS + 2 slots (34 us), EIFS = SIFS + ACK at the "
+      "control rate + DIFS (94 us at 6 Mbit/s). Frame durations: 16 us preamble + 4 us PLCP "
+      "header + 4 us symbols carrying 16 + 8 * bytes + 6 bits.\n"
+      "Access: a packet arriving at an idle station whose medium has been idle for DIFS (EIFS "
+      "after a failed reception) and whose backoff is 0 is sent at once; otherwise the station "
+      "backs off a uniform number of slots in [0, CW], counted only in idle slots after DIFS/"
+      "EIFS and frozen while the medium is busy (physically, or virtually by the NAV from other "
+      "stations' duration fields). CW starts at cw_min, becomes 2 (CW + 1) - 1 up to cw_max after "
+      "each failure and is reset after a success or a drop; a new backoff is drawn after every "
+      "exchange (post-backoff) and at start.\n"
+      "Unicast data is acknowledged after SIFS; if no ACK has started within the ACK timeout "
+      "(SIFS + slot + 20 us), the attempt failed (mac.ack_timeouts). Data frames larger than "
+      "rts_threshold_bytes (MPDU bytes) are preceded by RTS/CTS (CTS timeout likewise). "
+      "Failed RTS and data sent without RTS count against short_retry_limit, data after a CTS "
+      "against long_retry_limit (attempts, as ns-3's MaxSsrc/MaxSlrc); at the limit the packet "
+      "is dropped (retry_limit) and routing is told (link_failed). Broadcasts are sent once, "
+      "without RTS or ACK. Duplicates (retries of an already received sequence number) are "
+      "acknowledged but not delivered twice.\n"
+      "Queue: a FIFO of queue_limit packets (the packet being sent excluded); a packet arriving "
+      "at a full queue is dropped (queue_full), and one that waited longer than "
+      "queue_max_delay_s is dropped when it reaches the head (buffer_timeout), like ns-3's "
+      "WifiMacQueue (500 packets, 500 ms).\n"
+      "Frames: data frames carry header_bytes (MAC header 24 + FCS 4 + LLC/SNAP 8 = 36, as ns-3) "
+      "above the packet; ACK and CTS are 14 bytes, RTS 20, sent at control_rate_bps.\n"
+      "Counters: retries, ack_timeouts, cts_timeouts, rts, cts, acks (frames sent), duplicates; "
+      "the kernel adds tx_frames, tx_bytes and collisions (frames lost to interference).",
+      {
+          real_param("data_rate_bps", 6.0e6, "bit/s",
+                     "rate of data frames: 6, 9, 12, 18, 24, 36, 48 or 54 Mbit/s", 6.0e6, 54.0e6),
+          real_param("control_rate_bps", 6.0e6, "bit/s", "rate of ACK, RTS and CTS frames", 6.0e6,
+                     54.0e6),
+          real_param("slot_s", 9e-6, "s", "slot time", 1e-9, 1.0),
+          real_param("sifs_s", 16e-6, "s", "short interframe space", 1e-9, 1.0),
+          integer_param("cw_min", 15, "slots", "initial contention window", 0, 65535),
+          integer_param("cw_max", 1023, "slots", "largest contention window", 0, 65535),
+          integer_param("short_retry_limit", 7, "attempts",
+                        "attempts of an RTS, or of data sent without RTS", 1, 255),
+          integer_param("long_retry_limit", 4, "attempts", "attempts of data sent after a CTS", 1,
+                        255),
+          integer_param("rts_threshold_bytes", 65535, "B",
+                        "data MPDUs larger than this use RTS/CTS (65535: never, ns-3's default)", 0,
+                        65535),
+          integer_param("queue_limit", 500, "packets", "interface queue capacity", 1, 10000000),
+          real_param("queue_max_delay_s", 0.5, "s", "longest wait in the queue", 0.0, 1.0e9),
+          integer_param("header_bytes", 36, "B",
+                        "bytes a data frame adds to the packet (MAC header, FCS, LLC/SNAP)", 0,
+                        65535),
+      }};
+}
+
+Dcf80211::Dcf80211(const PluginArgs& args)
+    : timing_(from_seconds(args.params.real("slot_s")), from_seconds(args.params.real("sifs_s")),
+              args.params.real("data_rate_bps"), args.params.real("control_rate_bps")),
+      access_(timing_),
+      cw_(static_cast<std::uint32_t>(args.params.integer("cw_min")),
+          static_cast<std::uint32_t>(args.params.integer("cw_max"))),
+      queue_(static_cast<std::size_t>(args.params.integer("queue_limit")),
+             from_seconds(args.params.real("queue_max_delay_s"))),
+      random_(args.seed),
+      header_bytes_(static_cast<std::uint32_t>(args.params.integer("header_bytes"))),
+      rts_threshold_bytes_(static_cast<std::uint32_t>(args.params.integer("rts_threshold_bytes"))),
+      short_retry_limit_(static_cast<std::uint32_t>(args.params.integer("short_retry_limit"))),
+      long_retry_limit_(static_cast<std::uint32_t>(args.params.integer("long_retry_limit"))) {}
+
+void Dcf80211::attach(MacContext& context) {
+  context_ = &context;
+  new_backoff();  // like ns-3's Txop, a backoff is drawn at start
+}
+
+void Dcf80211::new_backoff() { access_.set_backoff(now(), cw_.draw(random_)); }
+
+void Dcf80211::enqueue(Packet packet, NodeId next_hop) {
+  if (queue_.full()) {
+    context_->drop(packet, DropReason::queue_full);
+    return;
+  }
+  const bool idle_station = queue_.empty() && !exchange_;
+  queue_.push(std::move(packet), next_hop, now());
+  if (idle_station) start_exchange_if_needed(true);
+}
+
+void Dcf80211::start_exchange_if_needed(bool fresh_arrival) {
+  if (exchange_) return;
+  auto item = queue_.pop(now(), [this](const InterfaceQueue::Item& expired) {
+    context_->drop(expired.packet, DropReason::buffer_timeout);
+  });
+  if (!item) return;
+  const std::uint32_t mpdu_bytes = header_bytes_ + item->packet.size_bytes();
+  const bool use_rts = item->next_hop != kBroadcast && mpdu_bytes > rts_threshold_bytes_;
+  exchange_ = Exchange{std::move(item->packet), item->next_hop, next_sequence_++, use_rts};
+  // 802.11-2016 10.3.4.2: send at once only if the medium has been idle for DIFS/EIFS and the
+  // backoff is 0; otherwise back off.
+  if (fresh_arrival && access_.backoff_slots(now()) == 0 && !access_.idle_for_ifs(now())) {
+    new_backoff();
+  }
+  access_requested_ = true;
+  schedule_access();
+}
+
+void Dcf80211::schedule_access() {
+  if (access_timer_ != kNoTimer) {
+    context_->cancel(access_timer_);
+    access_timer_ = kNoTimer;
+  }
+  if (!access_requested_ || transmitting_ || awaiting_ != Await::none || sifs_timer_ != kNoTimer) {
+    return;
+  }
+  const SimTime grant = access_.grant_time(now());
+  if (grant == kTimeNever) return;
+  access_timer_ = context_->schedule(grant - now(), [this] {
+    access_timer_ = kNoTimer;
+    access_granted();
+  });
+}
+
+void Dcf80211::access_granted() {
+  access_requested_ = false;
+  if (!exchange_) return;
+  if (exchange_->use_rts) {
+    context_->count("rts");
+    transmit(make_rts(exchange_->next_hop, header_bytes_ + exchange_->packet.size_bytes(), timing_),
+             TxKind::rts);
+    return;
+  }
+  send_data();
+}
+
+void Dcf80211::send_data() {
+  transmit(make_data(exchange_->packet, exchange_->next_hop, header_bytes_, exchange_->sequence,
+                     exchange_->retry, timing_),
+           TxKind::data);
+}
+
+void Dcf80211::transmit(Frame frame, TxKind kind) {
+  const SimTime duration = airtime(frame, timing_);
+  transmitting_ = true;
+  tx_kind_ = kind;
+  access_.medium_busy(now());
+  context_->transmit(std::move(frame), duration);
+}
+
+void Dcf80211::send_after_sifs(Frame frame, TxKind kind) {
+  if (sifs_timer_ != kNoTimer) return;  // one response at a time
+  sifs_timer_ = context_->schedule(timing_.sifs, [this, frame = std::move(frame), kind]() mutable {
+    sifs_timer_ = kNoTimer;
+    if (transmitting_) return;
+    transmit(std::move(frame), kind);
+  });
+  schedule_access();
+}
+
+void Dcf80211::on_transmit_end() {
+  transmitting_ = false;
+  if (!context_->medium_busy()) access_.medium_idle(now());
+  if (tx_kind_ == TxKind::rts) {
+    awaiting_ = Await::cts;
+    timeout_timer_ = context_->schedule(timing_.cts_timeout, [this] { response_timeout(); });
+  } else if (tx_kind_ == TxKind::data && exchange_) {
+    if (exchange_->next_hop == kBroadcast) {
+      exchange_finished();
+      return;
+    }
+    awaiting_ = Await::ack;
+    timeout_timer_ = context_->schedule(timing_.ack_timeout, [this] { response_timeout(); });
+  }
+  schedule_access();
+}
+
+void Dcf80211::response_timeout() {
+  timeout_timer_ = kNoTimer;
+  if (context_->medium_busy()) {
+    // A frame is arriving: it may be the response. Decide when it ends.
+    timeout_pending_busy_ = true;
+    return;
+  }
+  exchange_failed();
+}
+
+void Dcf80211::resolve_late_timeout() {
+  if (timeout_pending_busy_ && awaiting_ != Await::none) exchange_failed();
+}
+
+void Dcf80211::exchange_failed() {
+  const Await stage = awaiting_;
+  awaiting_ = Await::none;
+  timeout_pending_busy_ = false;
+  if (timeout_timer_ != kNoTimer) context_->cancel(timeout_timer_);
+  timeout_timer_ = kNoTimer;
+  context_->count(stage == Await::cts ? "cts_timeouts" : "ack_timeouts");
+  access_.busy_until(now());
+  bool give_up = false;
+  if (stage == Await::ack && exchange_->use_rts) {
+    give_up = ++exchange_->long_retries >= long_retry_limit_;
+  } else {
+    give_up = ++exchange_->short_retries >= short_retry_limit_;
+  }
+  if (give_up) {
+    const Packet packet = exchange_->packet;
+    const NodeId next_hop = exchange_->next_hop;
+    context_->drop(packet, DropReason::retry_limit);
+    context_->link_failed(packet, next_hop);
+    exchange_finished();
+    return;
+  }
+  context_->count("retries");
+  cw_.failed();
+  new_backoff();
+  exchange_->retry = true;
+  access_requested_ = true;
+  schedule_access();
+}
+
+void Dcf80211::exchange_finished() {
+  exchange_.reset();
+  awaiting_ = Await::none;
+  timeout_pending_busy_ = false;
+  cw_.reset();
+  new_backoff();
+  start_exchange_if_needed(false);
+  schedule_access();
+}
+
+void Dcf80211::on_receive(const Frame& frame, const RxInfo& /*info*/) {
+  access_.reception_ended(now(), true);
+  const NodeId self = context_->node();
+  if (frame.receiver != self) {
+    if (frame.receiver == kBroadcast) {
+      if (frame.type == FrameType::data && frame.packet) {
+        context_->deliver(*frame.packet, frame.transmitter);
+      }
+    } else if (frame.nav > kTimeZero) {
+      access_.set_nav(now(), now() + frame.nav);
+    }
+    resolve_late_timeout();
+    schedule_access();
+    return;
+  }
+  switch (frame.type) {
+    case FrameType::data: {
+      context_->count("acks");
+      send_after_sifs(make_ack(frame.transmitter, timing_), TxKind::response);
+      const auto last = last_sequence_.find(frame.transmitter);
+      const bool duplicate =
+          frame.retry && last != last_sequence_.end() && last->second == frame.sequence;
+      last_sequence_[frame.transmitter] = frame.sequence;
+      if (duplicate) {
+        context_->count("duplicates");
+      } else if (frame.packet) {
+        context_->deliver(*frame.packet, frame.transmitter);
+      }
+      break;
+    }
+    case FrameType::rts:
+      if (access_.nav_end() <= now() && !transmitting_ && sifs_timer_ == kNoTimer) {
+        context_->count("cts");
+        send_after_sifs(make_cts(frame, timing_), TxKind::response);
+      }
+      break;
+    case FrameType::cts:
+      if (awaiting_ == Await::cts && exchange_) {
+        awaiting_ = Await::none;
+        timeout_pending_busy_ = false;
+        if (timeout_timer_ != kNoTimer) context_->cancel(timeout_timer_);
+        timeout_timer_ = kNoTimer;
+        send_after_sifs(make_data(exchange_->packet, exchange_->next_hop, header_bytes_,
+                                  exchange_->sequence, exchange_->retry, timing_),
+                        TxKind::data);
+      }
+      break;
+    case FrameType::ack:
+      if (awaiting_ == Await::ack && exchange_) {
+        if (timeout_timer_ != kNoTimer) context_->cancel(timeout_timer_);
+        timeout_timer_ = kNoTimer;
+        exchange_finished();
+        return;
+      }
+      break;
+  }
+  resolve_late_timeout();
+  schedule_access();
+}
+
+void Dcf80211::on_receive_error() {
+  access_.reception_ended(now(), false);
+  resolve_late_timeout();
+  schedule_access();
+}
+
+void Dcf80211::on_medium_busy() {
+  access_.medium_busy(now());
+  schedule_access();
+}
+
+void Dcf80211::on_medium_idle() {
+  access_.medium_idle(now());
+  if (timeout_pending_busy_) {
+    // The frame that ended may be the response; on_receive() follows at once if it was decoded.
+    context_->schedule(kTimeZero, [this] { resolve_late_timeout(); });
+  }
+  schedule_access();
+}
+
+}  // namespace swarmnet::dcf80211
+
+SWARMNET_PLUGIN(swarmnet::dcf80211::Dcf80211)

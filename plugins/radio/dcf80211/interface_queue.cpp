@@ -1,0 +1,27 @@
+#include "interface_queue.hpp"
+
+#include <utility>
+
+namespace swarmnet::dcf80211 {
+
+bool InterfaceQueue::push(Packet packet, NodeId next_hop, SimTime now) {
+  if (items_.size() >= limit_) return false;
+  items_.push_back(Item{std::move(packet), next_hop, now});
+  return true;
+}
+
+std::optional<InterfaceQueue::Item> InterfaceQueue::pop(
+    SimTime now, const std::function<void(const Item&)>& expired) {
+  while (!items_.empty()) {
+    Item item = std::move(items_.front());
+    items_.pop_front();
+    if (now - item.enqueued_at > max_delay_) {
+      expired(item);
+      continue;
+    }
+    return item;
+  }
+  return std::nullopt;
+}
+
+}  // namespace swarmnet::dcf80211
