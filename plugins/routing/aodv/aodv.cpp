@@ -1,0 +1,779 @@
+#include "aodv.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace swarmnet::aodv {
+
+namespace {
+
+constexpr SimTime kRateWindow = std::chrono::seconds(1);
+constexpr SimTime kRateRetryDelay = std::chrono::microseconds(100);
+constexpr std::uint32_t kMaxHopCount = 255;
+
+std::uint32_t to_ms(SimTime duration) {
+  const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(duration).count();
+  return static_cast<std::uint32_t>(std::clamp<std::int64_t>(ms, 0, UINT32_MAX));
+}
+
+SimTime from_ms(std::uint32_t ms) { return std::chrono::milliseconds(ms); }
+
+const char* counter_name(const Message& message) {
+  if (std::holds_alternative<Rreq>(message)) return "control_rreq";
+  if (const auto* rrep = std::get_if<Rrep>(&message)) {
+    return rrep->is_hello() ? "control_hello" : "control_rrep";
+  }
+  if (std::holds_alternative<Rerr>(message)) return "control_rerr";
+  return "control_rrep_ack";
+}
+
+void merge(std::vector<NodeId>& into, const std::vector<NodeId>& from) {
+  for (const NodeId node : from) {
+    const auto it = std::lower_bound(into.begin(), into.end(), node);
+    if (it == into.end() || *it != node) into.insert(it, node);
+  }
+}
+
+}  // namespace
+
+PluginInfo Aodv::info() {
+  return PluginInfo{
+      "aodv", "1.0.0",
+      "Ad hoc On-Demand Distance Vector routing (RFC 3561) with ns-3's default parameters",
+      "Routes are discovered on demand: a node without a route buffers the packet (max_queue_len "
+      "packets, max_queue_time_s each; overflow drops the oldest as queue_full, expiry as "
+      "buffer_timeout) and broadcasts a RREQ with an expanding ring search (ttl_start, "
+      "ttl_increment up to ttl_threshold, then net_diameter, rreq_retries times; ring timeout "
+      "2 * node_traversal_time * (ttl + timeout_buffer), then net_traversal_time with binary "
+      "backoff). After the last attempt the buffered packets are dropped as no_route. Nodes "
+      "relay a RREQ once (RREQ-id cache, path_discovery_time_s) and learn the reverse route; the "
+      "destination, or an intermediate node with a fresh enough route (unless destination_only), "
+      "answers with a RREP unicast along the reverse path, plus a gratuitous RREP to the "
+      "destination when gratuitous_reply is set. Routes carry destination sequence numbers, hop "
+      "counts, lifetimes and precursor lists; fresher information (higher sequence number, or "
+      "equal and fewer hops) replaces older, never the reverse. HELLOs (a RREP about oneself, "
+      "every hello_interval_s, TTL 1) maintain neighbours; allowed_hello_loss missed HELLOs or a "
+      "MAC's link_failed() report breaks the link: routes through it are invalidated with their "
+      "sequence number incremented, and a RERR goes to the precursors (unicast to a single one, "
+      "broadcast otherwise), which do the same. RREQs and RERRs are rate-limited per second; "
+      "broadcast control packets wait a random jitter of up to broadcast_jitter_max_s drawn "
+      "from the node's stream. A RREP sent with the A flag (for a neighbour's route, as in ns-3, "
+      "or always with rrep_ack_required) must be acknowledged with a RREP-ACK within "
+      "next_hop_wait_s, and a RREP the MAC could not deliver likewise, or the neighbour is "
+      "blacklisted (its RREQs ignored) for blacklist_timeout_s. Optional local repair "
+      "(enable_local_repair): a node that loses the next hop of a forwarded packet within "
+      "0.3 * net_diameter hops of the destination buffers it and searches once with TTL "
+      "max(route hops, hops from source / 2) + local_add_ttl before reporting the break. "
+      "Application broadcasts are rebroadcast with duplicate detection while their hop count is "
+      "below data_ttl (enable_broadcast). Data packets carry no AODV header; a unicast packet "
+      "that has travelled data_ttl hops is dropped as ttl_expired, one without a route at a relay "
+      "as no_route (with a RERR to its source). Control messages have their RFC sizes; the "
+      "RREQ's reserved byte carries its TTL. Counters (routing.*): control_rreq, control_rrep, "
+      "control_rerr, control_rrep_ack, control_hello (transmissions, originated or relayed), "
+      "route_discoveries, link_breaks, blacklisted, local_repairs, duplicates, malformed. "
+      "Departures from ns-3, all from RFC 3561: every route update follows section 6.2 (ns-3 "
+      "overwrites reverse routes unconditionally); a destination sets its sequence number to "
+      "the maximum of its own and the RREQ's (6.6.1); link breaks increment the sequence numbers "
+      "they report (6.11); neighbours are refreshed by what is heard from them, not by what is "
+      "sent to them; the RREP-ACK timer is armed (ns-3 never starts it).",
+      parameter_schema()};
+}
+
+Aodv::Aodv(const PluginArgs& args)
+    : params_(parameters_from(args.params)),
+      random_(args.seed),
+      table_(params_.delete_period),
+      queue_(params_.max_queue_len, params_.max_queue_time,
+             [this](const Packet& packet, DropReason reason) { context_->drop(packet, reason); }),
+      rreq_ids_(params_.path_discovery_time),
+      broadcast_ids_(params_.path_discovery_time) {}
+
+void Aodv::attach(RoutingContext& context) {
+  context_ = &context;
+  self_ = context.node();
+  if (params_.enable_hello) {
+    const SimTime start =
+        from_seconds(random_.uniform(0.0, to_seconds(params_.hello_start_jitter_max)));
+    context_->schedule(start, [this] { hello_timer_expired(); });
+    context_->schedule(params_.hello_interval, [this] { check_neighbors(); });
+  }
+}
+
+// ---- data -------------------------------------------------------------------------------------
+
+void Aodv::send(Packet packet) {
+  if (packet.destination == kBroadcast) {
+    broadcast_ids_.is_duplicate(packet, now());  // our own copies coming back are not relayed
+    context_->send_to_mac(std::move(packet), kBroadcast);
+    return;
+  }
+  if (packet.destination == self_) {
+    context_->deliver(packet);
+    return;
+  }
+  if (const RouteEntry* route = table_.find_valid(packet.destination, now())) {
+    const RouteEntry copy = *route;
+    transmit_data(std::move(packet), copy);
+    return;
+  }
+  const NodeId destination = packet.destination;
+  buffer(std::move(packet));
+  if (!discovery_timers_.contains(destination)) send_request(destination);
+}
+
+void Aodv::receive(Packet packet, NodeId from) {
+  if (params_.enable_hello) neighbors_.update(from, params_.hello_lifetime(), now());
+  if (!packet.is_control()) {
+    if (packet.destination == kBroadcast) {
+      deliver_broadcast(std::move(packet));
+    } else if (packet.destination == self_) {
+      table_.refresh(packet.source, params_.active_route_timeout, now());
+      if (const RouteEntry* to_origin = table_.find_valid(packet.source, now())) {
+        table_.refresh(to_origin->next_hop, params_.active_route_timeout, now());
+      }
+      context_->deliver(packet);
+    } else {
+      forward_data(std::move(packet));
+    }
+    return;
+  }
+  std::optional<Message> message = decode(packet.header);
+  if (!message) {
+    context_->count("malformed");
+    return;
+  }
+  if (auto* rreq = std::get_if<Rreq>(&*message)) {
+    receive_request(*rreq, from);
+  } else if (auto* rrep = std::get_if<Rrep>(&*message)) {
+    update_route_to_neighbor(from);
+    receive_reply(*rrep, from);
+  } else if (auto* rerr = std::get_if<Rerr>(&*message)) {
+    update_route_to_neighbor(from);
+    receive_error(*rerr, from);
+  } else {
+    update_route_to_neighbor(from);
+    receive_ack(from);
+  }
+}
+
+void Aodv::deliver_broadcast(Packet packet) {
+  if (broadcast_ids_.is_duplicate(packet, now())) {
+    context_->count("duplicates");
+    return;
+  }
+  context_->deliver(packet);
+  if (!params_.enable_broadcast || packet.hops >= params_.data_ttl) return;
+  context_->trace_forward(packet);
+  context_->send_to_mac(std::move(packet), kBroadcast);
+}
+
+void Aodv::forward_data(Packet packet) {
+  if (packet.hops >= params_.data_ttl) {
+    context_->drop(packet, DropReason::ttl_expired);
+    return;
+  }
+  const SimTime t = now();
+  if (const RouteEntry* route = table_.find_valid(packet.destination, t)) {
+    const RouteEntry to_destination = *route;
+    // RFC 3561 6.2: using a route keeps it, its next hop, the source and the previous hop alive.
+    table_.refresh(packet.source, params_.active_route_timeout, t);
+    if (const RouteEntry* to_origin = table_.find_valid(packet.source, t)) {
+      table_.refresh(to_origin->next_hop, params_.active_route_timeout, t);
+    }
+    transmit_data(std::move(packet), to_destination);
+    return;
+  }
+  // No route: RERR to the source (RFC 3561 6.11 case ii) and drop.
+  const RouteEntry* stale = table_.find(packet.destination, t);
+  const std::uint32_t seq = stale != nullptr && stale->valid_seq ? stale->seq : 0;
+  context_->drop(packet, DropReason::no_route);
+  if (!rate_allows(rerr_count_, params_.rerr_rate_limit)) return;
+  Rerr rerr;
+  rerr.destinations.push_back({packet.destination, seq});
+  if (const RouteEntry* to_origin = table_.find_valid(packet.source, t)) {
+    send_control(rerr, to_origin->next_hop);
+  } else {
+    broadcast_control(rerr);
+  }
+}
+
+void Aodv::transmit_data(Packet packet, const RouteEntry& route) {
+  table_.refresh(route.destination, params_.active_route_timeout, now());
+  table_.refresh(route.next_hop, params_.active_route_timeout, now());
+  if (packet.source != self_) context_->trace_forward(packet);
+  context_->send_to_mac(std::move(packet), route.next_hop);
+}
+
+void Aodv::buffer(Packet packet) {
+  queue_.enqueue(std::move(packet), now());
+  arm_queue_timer();
+}
+
+void Aodv::arm_queue_timer() {
+  const SimTime expiry = queue_.next_expiry();
+  if (expiry == kTimeNever || expiry >= queue_timer_at_) return;
+  context_->cancel(queue_timer_);
+  queue_timer_at_ = expiry;
+  // purge() drops packets whose expiry is strictly before now.
+  queue_timer_ = context_->schedule(expiry - now() + SimTime{1}, [this] {
+    queue_timer_ = kNoTimer;
+    queue_timer_at_ = kTimeNever;
+    queue_.purge(now());
+    arm_queue_timer();
+  });
+}
+
+void Aodv::send_queued(NodeId destination) {
+  for (Packet& packet : queue_.take(destination, now())) {
+    const RouteEntry* route = table_.find_valid(destination, now());
+    if (route == nullptr) {
+      buffer(std::move(packet));
+      continue;
+    }
+    const RouteEntry copy = *route;
+    transmit_data(std::move(packet), copy);
+  }
+}
+
+// ---- route discovery --------------------------------------------------------------------------
+
+void Aodv::send_request(NodeId destination) {
+  if (!rate_allows(rreq_count_, params_.rreq_rate_limit)) {
+    // Try again just after the rate-limit window turns.
+    const SimTime delay = next_rate_window() - now() + kRateRetryDelay;
+    auto& timer = discovery_timers_[destination];
+    context_->cancel(timer);
+    timer = context_->schedule(delay, [this, destination] {
+      discovery_timers_.erase(destination);
+      send_request(destination);
+    });
+    return;
+  }
+  const SimTime t = now();
+  Rreq rreq;
+  rreq.destination = destination;
+  std::uint32_t ttl = params_.ttl_start;
+  RouteEntry* route = table_.find(destination, t);
+  if (route != nullptr) {
+    if (route->state != RouteState::in_search) {
+      ttl = std::min(route->hop_count + params_.ttl_increment, params_.net_diameter);
+    } else {
+      ttl = route->hop_count + params_.ttl_increment;
+      if (ttl > params_.ttl_threshold) ttl = params_.net_diameter;
+    }
+    if (ttl == params_.net_diameter) ++route->rreq_count;
+    if (route->valid_seq) {
+      rreq.destination_seq = route->seq;
+    } else {
+      rreq.unknown_seq = true;
+    }
+    route->hop_count = ttl;
+    route->state = RouteState::in_search;
+    route->expires = t + params_.path_discovery_time;
+  } else {
+    rreq.unknown_seq = true;
+    RouteEntry entry;
+    entry.destination = destination;
+    entry.hop_count = ttl;
+    entry.state = RouteState::in_search;
+    entry.expires = t + params_.path_discovery_time;
+    entry.rreq_count = ttl == params_.net_diameter ? 1 : 0;
+    table_.insert(std::move(entry));
+  }
+  rreq.gratuitous = params_.gratuitous_reply;
+  rreq.destination_only = params_.destination_only;
+  rreq.originator = self_;
+  rreq.originator_seq = ++seq_;
+  rreq.id = ++rreq_id_;
+  rreq.ttl = static_cast<std::uint8_t>(std::min<std::uint32_t>(ttl, kMaxHopCount));
+  rreq_ids_.is_duplicate(self_, rreq.id, t);
+  context_->count("route_discoveries");
+  broadcast_control(rreq);
+  schedule_request_retry(destination);
+}
+
+void Aodv::schedule_request_retry(NodeId destination) {
+  const RouteEntry* route = table_.find(destination, now());
+  SimTime retry = params_.net_traversal_time;
+  if (route != nullptr && route->hop_count < params_.net_diameter) {
+    retry = 2 * params_.node_traversal_time *
+            static_cast<std::int64_t>(route->hop_count + params_.timeout_buffer);
+  } else if (route != nullptr && route->rreq_count > 0) {
+    retry = params_.net_traversal_time * (std::int64_t{1} << std::min(route->rreq_count - 1, 20U));
+  }
+  auto& timer = discovery_timers_[destination];
+  context_->cancel(timer);
+  timer = context_->schedule(retry, [this, destination] { request_timer_expired(destination); });
+}
+
+void Aodv::request_timer_expired(NodeId destination) {
+  discovery_timers_.erase(destination);
+  RouteEntry* route = table_.find(destination, now());
+  if (route != nullptr && route->is_valid()) {
+    repairing_.erase(destination);
+    send_queued(destination);
+    return;
+  }
+  if (repairing_.erase(destination) > 0) {
+    // A local repair gets one attempt; then the break is reported (RFC 3561 6.12).
+    if (route != nullptr) {
+      Rerr rerr;
+      rerr.destinations.push_back({destination, route->seq});
+      const std::vector<NodeId> precursors = route->precursors;
+      route->state = RouteState::invalid;
+      route->expires = now() + params_.delete_period;
+      send_error(rerr, precursors);
+    }
+    give_up(destination);
+    return;
+  }
+  if (route == nullptr || route->state != RouteState::in_search ||
+      route->rreq_count >= std::max(params_.rreq_retries, 1U)) {
+    give_up(destination);
+    return;
+  }
+  send_request(destination);
+}
+
+void Aodv::give_up(NodeId destination) {
+  if (const RouteEntry* route = table_.find(destination, now());
+      route != nullptr && !route->is_valid()) {
+    table_.erase(destination);
+  }
+  queue_.drop_destination(destination, DropReason::no_route, now());
+}
+
+bool Aodv::start_local_repair(const Packet& packet, RouteEntry& route) {
+  if (!params_.enable_local_repair || packet.is_control() || packet.source == self_ ||
+      route.hop_count > params_.max_repair_ttl() || discovery_timers_.contains(route.destination)) {
+    return false;
+  }
+  if (!rate_allows(rreq_count_, params_.rreq_rate_limit)) return false;
+  const NodeId destination = route.destination;
+  const std::uint32_t ttl = std::max(route.hop_count, packet.hops / 2) + params_.local_add_ttl;
+  context_->count("local_repairs");
+  route.state = RouteState::in_search;
+  route.seq += 1;  // RFC 3561 6.12: the destination sequence number is incremented
+  route.valid_seq = true;
+  route.expires = now() + params_.path_discovery_time;
+  repairing_.insert(destination);
+
+  Rreq rreq;
+  rreq.destination = destination;
+  rreq.destination_seq = route.seq;
+  rreq.gratuitous = params_.gratuitous_reply;
+  rreq.destination_only = params_.destination_only;
+  rreq.originator = self_;
+  rreq.originator_seq = ++seq_;
+  rreq.id = ++rreq_id_;
+  rreq.ttl = static_cast<std::uint8_t>(std::min<std::uint32_t>(ttl, kMaxHopCount));
+  rreq_ids_.is_duplicate(self_, rreq.id, now());
+  broadcast_control(rreq);
+  const SimTime wait =
+      2 * params_.node_traversal_time * static_cast<std::int64_t>(ttl + params_.timeout_buffer);
+  discovery_timers_[destination] =
+      context_->schedule(wait, [this, destination] { request_timer_expired(destination); });
+  return true;
+}
+
+// ---- control messages in ----------------------------------------------------------------------
+
+bool Aodv::fresher(const RouteEntry& entry, std::uint32_t seq, std::uint32_t hops) {
+  if (!entry.valid_seq) return true;
+  if (seq_newer(seq, entry.seq)) return true;
+  return seq == entry.seq && (!entry.is_valid() || hops < entry.hop_count);
+}
+
+void Aodv::update_route_to_neighbor(NodeId neighbor) {
+  const SimTime t = now();
+  RouteEntry* route = table_.find(neighbor, t);
+  if (route == nullptr) {
+    RouteEntry entry;
+    entry.destination = neighbor;
+    entry.next_hop = neighbor;
+    entry.hop_count = 1;
+    entry.expires = t + params_.active_route_timeout;
+    table_.insert(std::move(entry));
+    return;
+  }
+  if (route->is_valid() && route->hop_count == 1 && route->next_hop == neighbor) {
+    route->expires = std::max(route->expires, t + params_.active_route_timeout);
+    return;
+  }
+  if (route->state == RouteState::in_search) {
+    // A discovery for this neighbour is under way; a direct route ends it.
+    context_->cancel(discovery_timers_[neighbor]);
+    discovery_timers_.erase(neighbor);
+    repairing_.erase(neighbor);
+  }
+  // The sequence number and its validity stay (ns-3 clears the validity, which lets any later
+  // advertisement with the same number replace this route: a loop if it leads back through a
+  // node that routes via this one).
+  route->state = RouteState::valid;
+  route->next_hop = neighbor;
+  route->hop_count = 1;
+  route->rreq_count = 0;
+  route->expires = std::max(route->expires, t + params_.active_route_timeout);
+  if (queue_.has(neighbor)) send_queued(neighbor);
+}
+
+void Aodv::receive_request(const Rreq& received, NodeId from) {
+  const SimTime t = now();
+  if (table_.is_blacklisted(from, t)) return;  // RFC 3561 6.8
+  if (received.originator == self_ || rreq_ids_.is_duplicate(received.originator, received.id, t)) {
+    return;
+  }
+  update_route_to_neighbor(from);
+  Rreq rreq = received;
+  const std::uint32_t hops = std::uint32_t{rreq.hop_count} + 1;
+  rreq.hop_count = static_cast<std::uint8_t>(std::min(hops, kMaxHopCount));
+
+  // Reverse route to the originator (RFC 3561 6.5).
+  const SimTime reverse_lifetime =
+      std::max(kTimeZero, 2 * params_.net_traversal_time -
+                              2 * static_cast<std::int64_t>(hops) * params_.node_traversal_time);
+  RouteEntry* to_origin = table_.find(rreq.originator, t);
+  if (to_origin == nullptr) {
+    RouteEntry entry;
+    entry.destination = rreq.originator;
+    entry.next_hop = from;
+    entry.hop_count = hops;
+    entry.seq = rreq.originator_seq;
+    entry.valid_seq = true;
+    entry.expires = t + reverse_lifetime;
+    to_origin = &table_.insert(std::move(entry));
+  } else if (fresher(*to_origin, rreq.originator_seq, hops)) {
+    if (to_origin->state == RouteState::in_search) {
+      context_->cancel(discovery_timers_[rreq.originator]);
+      discovery_timers_.erase(rreq.originator);
+      repairing_.erase(rreq.originator);
+    }
+    to_origin->seq = rreq.originator_seq;
+    to_origin->valid_seq = true;
+    to_origin->next_hop = from;
+    to_origin->hop_count = hops;
+    to_origin->state = RouteState::valid;
+    to_origin->rreq_count = 0;
+    to_origin->expires = std::max(to_origin->expires, t + reverse_lifetime);
+  } else if (to_origin->is_valid() && to_origin->next_hop == from) {
+    to_origin->expires = std::max(to_origin->expires, t + reverse_lifetime);
+  }
+  if (to_origin->is_valid() && queue_.has(rreq.originator)) send_queued(rreq.originator);
+  const bool reverse_usable = to_origin->is_valid();
+
+  if (rreq.destination == self_) {
+    if (reverse_usable) reply_as_destination(rreq, *to_origin);
+    return;
+  }
+  if (RouteEntry* to_destination = table_.find(rreq.destination, t)) {
+    if (to_destination->next_hop == from) return;  // replying would make a loop
+    const bool fresh_enough =
+        rreq.unknown_seq || seq_not_older(to_destination->seq, rreq.destination_seq);
+    if (fresh_enough && to_destination->valid_seq) {
+      if (!rreq.destination_only && to_destination->is_valid() && reverse_usable) {
+        reply_as_intermediate(rreq, *to_destination, *to_origin);
+        return;
+      }
+      rreq.destination_seq = to_destination->seq;
+      rreq.unknown_seq = false;
+    }
+  }
+  if (rreq.ttl < 2 || hops >= kMaxHopCount) return;
+  rreq.ttl = static_cast<std::uint8_t>(rreq.ttl - 1);
+  broadcast_control(rreq);
+}
+
+void Aodv::receive_reply(Rrep rrep, NodeId from) {
+  const std::uint32_t hops = std::uint32_t{rrep.hop_count} + 1;
+  rrep.hop_count = static_cast<std::uint8_t>(std::min(hops, kMaxHopCount));
+  if (rrep.is_hello()) {
+    receive_hello(rrep);
+    return;
+  }
+  const SimTime t = now();
+  if (rrep.destination == self_) return;
+  if (rrep.ack_required) send_control(RrepAck{}, from);
+
+  // Forward route to the destination (RFC 3561 6.7).
+  RouteEntry* to_destination = table_.find(rrep.destination, t);
+  if (to_destination == nullptr || fresher(*to_destination, rrep.destination_seq, hops)) {
+    if (to_destination == nullptr) {
+      RouteEntry entry;
+      entry.destination = rrep.destination;
+      to_destination = &table_.insert(std::move(entry));
+    }
+    to_destination->next_hop = from;
+    to_destination->hop_count = hops;
+    to_destination->seq = rrep.destination_seq;
+    to_destination->valid_seq = true;
+    to_destination->state = RouteState::valid;
+    to_destination->rreq_count = 0;
+    to_destination->expires = t + from_ms(rrep.lifetime_ms);
+  }
+
+  if (rrep.originator == self_) {
+    if (to_destination->is_valid()) {
+      if (const auto it = discovery_timers_.find(rrep.destination); it != discovery_timers_.end()) {
+        context_->cancel(it->second);
+        discovery_timers_.erase(it);
+      }
+      repairing_.erase(rrep.destination);
+      send_queued(rrep.destination);
+    }
+    return;
+  }
+
+  RouteEntry* to_origin = table_.find_valid(rrep.originator, t);
+  if (to_origin == nullptr || hops >= kMaxHopCount) return;  // no reverse route: drop
+  to_origin->expires = std::max(to_origin->expires, t + params_.active_route_timeout);
+  if (to_destination->is_valid()) {
+    // Precursors (RFC 3561 6.7): each end learns who relies on it.
+    const NodeId toward_origin = to_origin->next_hop;
+    const NodeId toward_destination = to_destination->next_hop;
+    to_destination->insert_precursor(toward_origin);
+    to_origin->insert_precursor(toward_destination);
+    if (RouteEntry* next = table_.find(toward_destination, t))
+      next->insert_precursor(toward_origin);
+    if (RouteEntry* prev = table_.find(toward_origin, t))
+      prev->insert_precursor(toward_destination);
+  }
+  rrep.ack_required = false;
+  send_reply(rrep, to_origin->next_hop);
+}
+
+void Aodv::receive_hello(const Rrep& hello) {
+  const SimTime t = now();
+  const NodeId neighbor = hello.destination;
+  RouteEntry* route = table_.find(neighbor, t);
+  if (route == nullptr) {
+    RouteEntry entry;
+    entry.destination = neighbor;
+    entry.expires = t + from_ms(hello.lifetime_ms);
+    route = &table_.insert(std::move(entry));
+  } else {
+    route->expires = std::max(route->expires, t + params_.hello_lifetime());
+  }
+  if (route->state == RouteState::in_search) {
+    if (const auto it = discovery_timers_.find(neighbor); it != discovery_timers_.end()) {
+      context_->cancel(it->second);
+      discovery_timers_.erase(it);
+    }
+    repairing_.erase(neighbor);
+  }
+  if (!route->valid_seq || seq_not_older(hello.destination_seq, route->seq)) {
+    route->seq = hello.destination_seq;
+  }
+  route->valid_seq = true;
+  route->state = RouteState::valid;
+  route->hop_count = 1;
+  route->next_hop = neighbor;
+  route->rreq_count = 0;
+  if (params_.enable_hello) neighbors_.update(neighbor, params_.hello_lifetime(), t);
+  if (queue_.has(neighbor)) send_queued(neighbor);
+}
+
+void Aodv::receive_error(const Rerr& rerr, NodeId from) {
+  if (rerr.no_delete) return;  // a repair is under way upstream; routes stay
+  const SimTime t = now();
+  Rerr relay;
+  std::vector<NodeId> precursors;
+  for (const UnreachableDestination& d : rerr.destinations) {
+    RouteEntry* route = table_.find_valid(d.destination, t);
+    if (route == nullptr || route->next_hop != from) continue;
+    if (seq_newer(d.seq, route->seq) || !route->valid_seq) route->seq = d.seq;
+    route->valid_seq = true;
+    table_.invalidate(*route, t);
+    merge(precursors, route->precursors);
+    relay.destinations.push_back({d.destination, route->seq});
+  }
+  if (!relay.destinations.empty()) send_error(relay, precursors);
+}
+
+void Aodv::receive_ack(NodeId from) {
+  const auto it = ack_timers_.find(from);
+  if (it == ack_timers_.end()) return;
+  context_->cancel(it->second);
+  ack_timers_.erase(it);
+}
+
+// ---- control messages out ---------------------------------------------------------------------
+
+void Aodv::reply_as_destination(const Rreq& rreq, const RouteEntry& to_origin) {
+  // RFC 3561 6.6.1: at least the sequence number the originator asked for.
+  if (!rreq.unknown_seq && seq_newer(rreq.destination_seq, seq_)) seq_ = rreq.destination_seq;
+  Rrep rrep;
+  rrep.destination = self_;
+  rrep.destination_seq = seq_;
+  rrep.originator = rreq.originator;
+  rrep.lifetime_ms = to_ms(params_.my_route_timeout);
+  rrep.ack_required = params_.rrep_ack_required;
+  send_reply(rrep, to_origin.next_hop);
+}
+
+void Aodv::reply_as_intermediate(const Rreq& rreq, RouteEntry& to_destination,
+                                 RouteEntry& to_origin) {
+  const SimTime t = now();
+  Rrep rrep;
+  rrep.hop_count = static_cast<std::uint8_t>(std::min(to_destination.hop_count, kMaxHopCount));
+  rrep.destination = to_destination.destination;
+  rrep.destination_seq = to_destination.seq;
+  rrep.originator = to_origin.destination;
+  rrep.lifetime_ms = to_ms(to_destination.expires - t);
+  // ns-3: answering for a neighbour, the link may be unidirectional; ask for an acknowledgement.
+  rrep.ack_required = params_.rrep_ack_required || to_destination.hop_count == 1;
+  to_destination.insert_precursor(to_origin.next_hop);
+  to_origin.insert_precursor(to_destination.next_hop);
+  send_reply(rrep, to_origin.next_hop);
+  if (rreq.gratuitous) {
+    Rrep gratuitous;
+    gratuitous.hop_count = static_cast<std::uint8_t>(std::min(to_origin.hop_count, kMaxHopCount));
+    gratuitous.destination = to_origin.destination;
+    gratuitous.destination_seq = to_origin.seq;
+    gratuitous.originator = to_destination.destination;
+    gratuitous.lifetime_ms = to_ms(to_origin.expires - t);
+    send_control(gratuitous, to_destination.next_hop);
+  }
+}
+
+void Aodv::send_reply(const Rrep& rrep, NodeId next_hop) {
+  Rrep out = rrep;
+  out.ack_required = out.ack_required || params_.rrep_ack_required;
+  if (out.ack_required && !ack_timers_.contains(next_hop)) {
+    ack_timers_[next_hop] = context_->schedule(params_.next_hop_wait, [this, next_hop] {
+      ack_timers_.erase(next_hop);
+      table_.blacklist(next_hop, now() + params_.blacklist_timeout);
+      context_->count("blacklisted");
+    });
+  }
+  send_control(out, next_hop);
+}
+
+void Aodv::send_hello() {
+  Rrep hello;
+  hello.destination = self_;
+  hello.destination_seq = seq_;
+  hello.originator = self_;
+  hello.lifetime_ms = to_ms(params_.hello_lifetime());
+  broadcast_control(hello);
+}
+
+void Aodv::send_error(const Rerr& rerr, const std::vector<NodeId>& precursors) {
+  if (precursors.empty()) return;
+  for (std::size_t first = 0; first < rerr.destinations.size(); first += Rerr::kMaxDestinations) {
+    if (!rate_allows(rerr_count_, params_.rerr_rate_limit)) return;
+    Rerr part;
+    part.no_delete = rerr.no_delete;
+    const std::size_t last = std::min(rerr.destinations.size(), first + Rerr::kMaxDestinations);
+    part.destinations.assign(rerr.destinations.begin() + static_cast<std::ptrdiff_t>(first),
+                             rerr.destinations.begin() + static_cast<std::ptrdiff_t>(last));
+    if (precursors.size() == 1) {
+      send_control(part, precursors.front());
+    } else {
+      broadcast_control(part);
+    }
+  }
+}
+
+void Aodv::send_control(const Message& message, NodeId next_hop) {
+  Packet packet = context_->make_control_packet(next_hop);
+  encode(message, packet.header);
+  context_->count(counter_name(message));
+  context_->send_to_mac(std::move(packet), next_hop);
+}
+
+void Aodv::broadcast_control(const Message& message) {
+  last_broadcast_ = now();
+  context_->schedule(jitter(), [this, message] { send_control(message, kBroadcast); });
+}
+
+// ---- link breakage ----------------------------------------------------------------------------
+
+void Aodv::link_failed(const Packet& packet, NodeId next_hop) {
+  context_->count("link_failures");
+  if (packet.is_control()) {
+    // RFC 3561 6.8: a RREP that could not be delivered marks the link as unidirectional.
+    const std::optional<Message> message = decode(packet.header);
+    if (message && std::holds_alternative<Rrep>(*message) && !std::get<Rrep>(*message).is_hello()) {
+      table_.blacklist(next_hop, now() + params_.blacklist_timeout);
+      context_->count("blacklisted");
+    }
+  }
+  neighbors_.close(next_hop);
+  bool seen = false;
+  for (const NodeId broken : neighbors_.purge(now())) {
+    seen = seen || broken == next_hop;
+    link_broken(broken, broken == next_hop ? &packet : nullptr);
+  }
+  if (!seen) link_broken(next_hop, &packet);
+}
+
+void Aodv::link_broken(NodeId neighbor, const Packet* failed) {
+  const SimTime t = now();
+  std::vector<UnreachableDestination> unreachable = table_.valid_destinations_via(neighbor, t);
+  if (unreachable.empty()) return;
+  context_->count("link_breaks");
+  Rerr rerr;
+  std::vector<NodeId> precursors;
+  for (const UnreachableDestination& d : unreachable) {
+    RouteEntry* route = table_.find_valid(d.destination, t);
+    if (route == nullptr) continue;
+    if (failed != nullptr && !failed->is_control() && failed->destination == d.destination &&
+        start_local_repair(*failed, *route)) {
+      buffer(*failed);
+      continue;
+    }
+    route->seq += 1;  // RFC 3561 6.11
+    route->valid_seq = true;
+    table_.invalidate(*route, t);
+    merge(precursors, route->precursors);
+    rerr.destinations.push_back({d.destination, route->seq});
+  }
+  if (!rerr.destinations.empty()) send_error(rerr, precursors);
+}
+
+void Aodv::check_neighbors() {
+  const SimTime t = now();
+  for (const NodeId broken : neighbors_.purge(t)) link_broken(broken, nullptr);
+  table_.purge(t);
+  rreq_ids_.purge(t);
+  context_->schedule(params_.hello_interval, [this] { check_neighbors(); });
+}
+
+// ---- timers -----------------------------------------------------------------------------------
+
+void Aodv::hello_timer_expired() {
+  // ns-3: a broadcast since the last tick stands in for the HELLO.
+  SimTime offset = kTimeZero;
+  if (last_broadcast_ != kTimeNever) {
+    offset = now() - last_broadcast_;
+  } else {
+    send_hello();
+  }
+  last_broadcast_ = kTimeNever;
+  context_->schedule(std::max(kTimeZero, params_.hello_interval - offset),
+                     [this] { hello_timer_expired(); });
+}
+
+bool Aodv::rate_allows(std::uint32_t& counter, std::uint32_t limit) {
+  const std::int64_t window = now().count() / kRateWindow.count();
+  if (window != rate_window_) {
+    rate_window_ = window;
+    rreq_count_ = 0;
+    rerr_count_ = 0;
+  }
+  if (counter >= limit) return false;
+  ++counter;
+  return true;
+}
+
+SimTime Aodv::next_rate_window() const {
+  return kRateWindow * (now().count() / kRateWindow.count() + 1);
+}
+
+SimTime Aodv::jitter() {
+  return from_seconds(random_.uniform(0.0, to_seconds(params_.broadcast_jitter_max)));
+}
+
+}  // namespace swarmnet::aodv
+
+SWARMNET_PLUGIN(swarmnet::aodv::Aodv)

@@ -1,0 +1,119 @@
+// `aodv` routing: Ad hoc On-Demand Distance Vector routing (RFC 3561) with ns-3's defaults.
+//
+// The protocol proper; its parts are separate units: packet formats (aodv_packet), the route
+// table (routing_table), the buffer of packets awaiting a route (request_queue), neighbours
+// (neighbors), the RREQ-id cache and broadcast duplicate detection (id_cache,
+// duplicate_detection) and the parameters (aodv_parameters). Where the RFC leaves a choice, ns-3's
+// aodv-routing-protocol.cc is followed; departures from it are listed in info().
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
+
+#include "aodv_packet.hpp"
+#include "aodv_parameters.hpp"
+#include "duplicate_detection.hpp"
+#include "id_cache.hpp"
+#include "neighbors.hpp"
+#include "request_queue.hpp"
+#include "routing_table.hpp"
+#include "sequence_number.hpp"
+#include "swarmnet/random.hpp"
+#include "swarmnet/routing.hpp"
+
+namespace swarmnet::aodv {
+
+class Aodv final : public Routing {
+ public:
+  static PluginInfo info();
+  explicit Aodv(const PluginArgs& args);
+
+  void attach(RoutingContext& context) override;
+  void send(Packet packet) override;
+  void receive(Packet packet, NodeId from) override;
+  void link_failed(const Packet& packet, NodeId next_hop) override;
+
+  // Read-only views for tests that compile the plugin's sources in (the kernel never sees them).
+  [[nodiscard]] const RoutingTable& routing_table() const { return table_; }
+  [[nodiscard]] const RequestQueue& request_queue() const { return queue_; }
+  [[nodiscard]] const Neighbors& neighbors() const { return neighbors_; }
+  [[nodiscard]] const AodvParameters& parameters() const { return params_; }
+  [[nodiscard]] std::uint32_t sequence_number() const { return seq_; }
+  [[nodiscard]] bool discovering(NodeId destination) const {
+    return discovery_timers_.contains(destination);
+  }
+
+ private:
+  [[nodiscard]] SimTime now() const { return context_->now(); }
+
+  // Data.
+  void forward_data(Packet packet);
+  void deliver_broadcast(Packet packet);
+  void transmit_data(Packet packet, const RouteEntry& route);
+  void buffer(Packet packet);
+  void arm_queue_timer();
+  void send_queued(NodeId destination);
+
+  // Route discovery.
+  void send_request(NodeId destination);
+  void request_timer_expired(NodeId destination);
+  void schedule_request_retry(NodeId destination);
+  void give_up(NodeId destination);
+  bool start_local_repair(const Packet& packet, RouteEntry& route);
+
+  // Control messages in.
+  void receive_request(const Rreq& rreq, NodeId from);
+  void receive_reply(Rrep rrep, NodeId from);
+  void receive_hello(const Rrep& hello);
+  void receive_error(const Rerr& rerr, NodeId from);
+  void receive_ack(NodeId from);
+  void update_route_to_neighbor(NodeId neighbor);
+
+  // Control messages out.
+  void reply_as_destination(const Rreq& rreq, const RouteEntry& to_origin);
+  void reply_as_intermediate(const Rreq& rreq, RouteEntry& to_destination, RouteEntry& to_origin);
+  void send_reply(const Rrep& rrep, NodeId next_hop);
+  void send_hello();
+  void send_error(const Rerr& rerr, const std::vector<NodeId>& precursors);
+  void send_control(const Message& message, NodeId next_hop);
+  void broadcast_control(const Message& message);
+
+  // Link breakage (RFC 3561 section 6.11).
+  void link_broken(NodeId neighbor, const Packet* failed);
+  void check_neighbors();
+
+  // Timers.
+  void hello_timer_expired();
+  bool rate_allows(std::uint32_t& counter, std::uint32_t limit);
+  [[nodiscard]] SimTime next_rate_window() const;
+  [[nodiscard]] SimTime jitter();
+  // `candidate` (seq, hops) should replace `entry` (RFC 3561 section 6.2).
+  [[nodiscard]] static bool fresher(const RouteEntry& entry, std::uint32_t seq, std::uint32_t hops);
+
+  AodvParameters params_;
+  RoutingContext* context_ = nullptr;
+  NodeId self_ = kNoNode;
+  RandomStream random_;
+  RoutingTable table_;
+  RequestQueue queue_;
+  Neighbors neighbors_;
+  IdCache rreq_ids_;
+  DuplicateDetection broadcast_ids_;
+
+  std::uint32_t seq_ = 0;
+  std::uint32_t rreq_id_ = 0;
+  std::map<NodeId, TimerId> discovery_timers_;
+  std::set<NodeId> repairing_;  // destinations whose discovery is a local repair
+  std::map<NodeId, TimerId> ack_timers_;
+  TimerId queue_timer_ = kNoTimer;
+  SimTime queue_timer_at_ = kTimeNever;
+  SimTime last_broadcast_ = kTimeNever;  // kTimeNever: no broadcast since the last HELLO tick
+
+  std::int64_t rate_window_ = -1;  // index of the current one-second rate-limit window
+  std::uint32_t rreq_count_ = 0;
+  std::uint32_t rerr_count_ = 0;
+};
+
+}  // namespace swarmnet::aodv

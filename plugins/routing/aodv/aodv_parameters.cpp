@@ -1,0 +1,142 @@
+#include "aodv_parameters.hpp"
+
+#include <algorithm>
+
+namespace swarmnet::aodv {
+
+namespace {
+
+constexpr double kDerived = 0.0;  // a duration of 0 means "derive it as RFC 3561 does"
+
+std::uint32_t count_param(const ParamSet& params, const char* name) {
+  return static_cast<std::uint32_t>(params.integer(name));
+}
+
+SimTime seconds_param(const ParamSet& params, const char* name) {
+  return from_seconds(params.real(name));
+}
+
+// The parameter's value, or `derived` when it is 0.
+SimTime derived_or(const ParamSet& params, const char* name, SimTime derived) {
+  const SimTime value = seconds_param(params, name);
+  return value == kTimeZero ? derived : value;
+}
+
+}  // namespace
+
+std::vector<ParamSpec> parameter_schema() {
+  constexpr double kDay = 86400.0;
+  return {
+      real_param("hello_interval_s", 1.0, "s", "HELLO emission interval (HELLO_INTERVAL)", 0.001,
+                 kDay),
+      integer_param("allowed_hello_loss", 2, "messages",
+                    "HELLOs that may be missed before the link is taken for broken", 1, 1000),
+      real_param("active_route_timeout_s", 3.0, "s",
+                 "lifetime a route gets, or keeps at least, when it is used", 0.001, kDay),
+      integer_param("net_diameter", 35, "hops", "largest hop count between two nodes", 1, 255),
+      real_param("node_traversal_time_s", 0.040, "s",
+                 "conservative one-hop traversal time, queueing and MAC included", 1e-6, 60.0),
+      real_param("net_traversal_time_s", kDerived, "s",
+                 "time to cross the network; 0: 2 * node_traversal_time_s * net_diameter", 0.0,
+                 kDay),
+      real_param("path_discovery_time_s", kDerived, "s",
+                 "lifetime of RREQ ids in the cache; 0: 2 * net_traversal_time_s", 0.0, kDay),
+      real_param("next_hop_wait_s", kDerived, "s",
+                 "time to wait for a RREP-ACK; 0: node_traversal_time_s + 0.01", 0.0, kDay),
+      real_param("my_route_timeout_s", kDerived, "s",
+                 "lifetime in a destination's RREP; 0: 2 * max(path_discovery_time_s, "
+                 "active_route_timeout_s)",
+                 0.0, kDay),
+      real_param("blacklist_timeout_s", kDerived, "s",
+                 "how long RREQs from a neighbour that did not acknowledge a RREP are ignored; "
+                 "0: rreq_retries * net_traversal_time_s",
+                 0.0, kDay),
+      real_param("delete_period_s", kDerived, "s",
+                 "how long an invalid route is kept before deletion; 0: 5 * "
+                 "max(active_route_timeout_s, hello_interval_s)",
+                 0.0, kDay),
+      integer_param("rreq_retries", 2, "requests",
+                    "RREQs at the network diameter before the destination is given up", 0, 100),
+      integer_param("rreq_rate_limit", 10, "1/s", "most RREQs a node originates per second", 1,
+                    100000),
+      integer_param("rerr_rate_limit", 10, "1/s", "most RERRs a node originates per second", 1,
+                    100000),
+      integer_param("ttl_start", 1, "hops", "TTL of the first RREQ of an expanding ring search", 1,
+                    255),
+      integer_param("ttl_increment", 2, "hops", "TTL added at each ring of the search", 1, 255),
+      integer_param("ttl_threshold", 7, "hops",
+                    "TTL beyond which the search uses net_diameter directly", 1, 255),
+      integer_param("timeout_buffer", 2, "hops",
+                    "extra hops in the ring traversal time, for congestion", 0, 255),
+      integer_param("max_queue_len", 64, "packets",
+                    "data packets buffered during route discovery; more drop the oldest "
+                    "(queue_full)",
+                    1, 1000000),
+      real_param("max_queue_time_s", 30.0, "s",
+                 "longest a packet waits for a route before it is dropped (buffer_timeout)", 0.001,
+                 kDay),
+      bool_param("destination_only", false, "RREQs carry the D flag: only the destination replies"),
+      bool_param("gratuitous_reply", true,
+                 "RREQs carry the G flag: an intermediate node that replies also sends a RREP to "
+                 "the destination"),
+      bool_param("enable_hello", true, "send HELLO messages and detect broken links by their loss"),
+      bool_param("enable_broadcast", true,
+                 "rebroadcast application broadcasts (with duplicate detection and data_ttl)"),
+      bool_param("enable_local_repair", false,
+                 "repair a broken link near the destination instead of reporting it at once"),
+      integer_param("local_add_ttl", 2, "hops", "TTL added to a local repair's RREQ", 0, 255),
+      bool_param("rrep_ack_required", false,
+                 "request a RREP-ACK for every RREP sent (ns-3 requests one only when an "
+                 "intermediate node answers for its neighbour)"),
+      integer_param("data_ttl", 64, "hops", "IP TTL of data packets (hops they may travel)", 1,
+                    255),
+      real_param("broadcast_jitter_max_s", 0.010, "s",
+                 "largest random delay before a broadcast control packet (ns-3: 10 ms)", 0.0, 10.0),
+      real_param("hello_start_jitter_max_s", 0.100, "s",
+                 "largest random delay before a node's first HELLO", 0.0, kDay),
+  };
+}
+
+AodvParameters parameters_from(const ParamSet& params) {
+  AodvParameters p;
+  p.hello_interval = seconds_param(params, "hello_interval_s");
+  p.allowed_hello_loss = count_param(params, "allowed_hello_loss");
+  p.active_route_timeout = seconds_param(params, "active_route_timeout_s");
+  p.net_diameter = count_param(params, "net_diameter");
+  p.node_traversal_time = seconds_param(params, "node_traversal_time_s");
+  p.rreq_retries = count_param(params, "rreq_retries");
+  p.net_traversal_time =
+      derived_or(params, "net_traversal_time_s",
+                 2 * p.node_traversal_time * static_cast<std::int64_t>(p.net_diameter));
+  p.path_discovery_time = derived_or(params, "path_discovery_time_s", 2 * p.net_traversal_time);
+  p.next_hop_wait =
+      derived_or(params, "next_hop_wait_s", p.node_traversal_time + from_seconds(0.010));
+  p.my_route_timeout = derived_or(params, "my_route_timeout_s",
+                                  2 * std::max(p.path_discovery_time, p.active_route_timeout));
+  p.blacklist_timeout =
+      derived_or(params, "blacklist_timeout_s",
+                 p.net_traversal_time * static_cast<std::int64_t>(std::max(p.rreq_retries, 1U)));
+  p.delete_period =
+      derived_or(params, "delete_period_s", 5 * std::max(p.active_route_timeout, p.hello_interval));
+  p.rreq_rate_limit = count_param(params, "rreq_rate_limit");
+  p.rerr_rate_limit = count_param(params, "rerr_rate_limit");
+  p.ttl_start = count_param(params, "ttl_start");
+  p.ttl_increment = count_param(params, "ttl_increment");
+  p.ttl_threshold = count_param(params, "ttl_threshold");
+  p.timeout_buffer = count_param(params, "timeout_buffer");
+  p.max_queue_len = count_param(params, "max_queue_len");
+  p.max_queue_time = seconds_param(params, "max_queue_time_s");
+  p.destination_only = params.boolean("destination_only");
+  p.gratuitous_reply = params.boolean("gratuitous_reply");
+  p.enable_hello = params.boolean("enable_hello");
+  p.enable_broadcast = params.boolean("enable_broadcast");
+  p.enable_local_repair = params.boolean("enable_local_repair");
+  p.local_add_ttl = count_param(params, "local_add_ttl");
+  p.rrep_ack_required = params.boolean("rrep_ack_required");
+  p.data_ttl = count_param(params, "data_ttl");
+  p.broadcast_jitter_max = seconds_param(params, "broadcast_jitter_max_s");
+  p.hello_start_jitter_max = seconds_param(params, "hello_start_jitter_max_s");
+  return p;
+}
+
+}  // namespace swarmnet::aodv

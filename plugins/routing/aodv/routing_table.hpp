@@ -1,0 +1,89 @@
+// AODV's route table (RFC 3561 section 2): one entry per destination with its sequence number,
+// hop count, next hop, expiry and precursors, plus the blacklist of neighbours whose link was
+// found unidirectional.
+//
+// Expiry is applied lazily and deterministically from the `now` handed to each call: a valid
+// route past its expiry becomes invalid and is kept for `delete_period` (so that its sequence
+// number is still known), an invalid route past that is deleted; a route in search is left to
+// the route discovery that owns it. An expiring route's sequence number is incremented, as
+// RFC 3561 section 6.11 does for a broken link: otherwise rule (iii) of section 6.2 (same
+// number, route inactive) lets the node accept a longer route with the same number through
+// upstream nodes that still route via it, a loop the random-mobility tests found.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <vector>
+
+#include "aodv_packet.hpp"
+#include "swarmnet/ids.hpp"
+#include "swarmnet/units.hpp"
+
+namespace swarmnet::aodv {
+
+enum class RouteState : std::uint8_t { valid, invalid, in_search };
+
+const char* to_string(RouteState state);
+
+struct RouteEntry {
+  NodeId destination = kNoNode;
+  NodeId next_hop = kNoNode;
+  std::uint32_t hop_count = 0;
+  std::uint32_t seq = 0;
+  bool valid_seq = false;
+  RouteState state = RouteState::valid;
+  SimTime expires{};               // absolute time
+  std::vector<NodeId> precursors;  // sorted, unique
+  std::uint32_t rreq_count = 0;    // RREQs sent at the network diameter in this discovery
+
+  [[nodiscard]] bool is_valid() const { return state == RouteState::valid; }
+  // Adds `node`; returns false if it was already a precursor.
+  bool insert_precursor(NodeId node);
+  [[nodiscard]] bool has_precursor(NodeId node) const;
+};
+
+class RoutingTable {
+ public:
+  explicit RoutingTable(SimTime delete_period) : delete_period_(delete_period) {}
+
+  // The entry for `destination` after expiry at `now`, or null.
+  RouteEntry* find(NodeId destination, SimTime now);
+  // As find(), but only a valid route.
+  RouteEntry* find_valid(NodeId destination, SimTime now);
+
+  // Inserts `entry`, replacing any entry for the same destination; returns the stored entry.
+  RouteEntry& insert(RouteEntry entry);
+  bool erase(NodeId destination);
+
+  // Invalidates a valid route (kept for delete_period); its hop count and sequence number stay.
+  void invalidate(RouteEntry& entry, SimTime now) const;
+  // Makes a valid route live at least until now + lifetime, and resets its RREQ count; false if
+  // there is no valid route to `destination`.
+  bool refresh(NodeId destination, SimTime lifetime, SimTime now);
+
+  // Valid routes whose next hop is `next_hop`, as (destination, sequence number), by destination.
+  [[nodiscard]] std::vector<UnreachableDestination> valid_destinations_via(NodeId next_hop,
+                                                                           SimTime now);
+
+  // Applies expiry to every entry.
+  void purge(SimTime now);
+
+  // The blacklist (RFC 3561 section 6.8).
+  void blacklist(NodeId neighbor, SimTime until) { blacklist_[neighbor] = until; }
+  [[nodiscard]] bool is_blacklisted(NodeId neighbor, SimTime now);
+
+  [[nodiscard]] const std::map<NodeId, RouteEntry>& entries() const { return entries_; }
+  [[nodiscard]] std::size_t size() const { return entries_.size(); }
+  [[nodiscard]] SimTime delete_period() const { return delete_period_; }
+
+ private:
+  // Applies expiry to one entry; returns false if the entry must be deleted.
+  bool age(RouteEntry& entry, SimTime now) const;
+
+  SimTime delete_period_;
+  std::map<NodeId, RouteEntry> entries_;  // ordered: iteration order is deterministic
+  std::map<NodeId, SimTime> blacklist_;
+};
+
+}  // namespace swarmnet::aodv

@@ -1,0 +1,424 @@
+// The AODV protocol class in a stand-alone test network (aodv_test_network.hpp), where every
+// route table can be read at any instant: discovery, expanding ring, intermediate replies,
+// sequence-number freshness, RERR propagation, HELLO loss, repair, local repair, RREP-ACK and
+// blacklist, buffering limits, rate limits, broadcasts, and loop freedom under random mobility.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "aodv_test_network.hpp"
+#include "swarmnet/random.hpp"
+
+namespace swarmnet::aodv {
+namespace {
+
+using test::aodv_params;
+using test::TestNetwork;
+
+SimTime s(double seconds) { return from_seconds(seconds); }
+
+std::vector<Vec2> line(std::uint32_t n, double spacing_m = 100.0) {
+  std::vector<Vec2> out;
+  for (std::uint32_t i = 0; i < n; ++i) out.emplace_back(spacing_m * i, 0.0);
+  return out;
+}
+
+const test::TestDelivery* delivery_of(const TestNetwork& net, std::uint64_t message_id) {
+  for (const auto& d : net.deliveries()) {
+    if (d.message_id == message_id) return &d;
+  }
+  return nullptr;
+}
+
+std::size_t drops_with(const TestNetwork& net, DropReason reason) {
+  return static_cast<std::size_t>(std::count_if(
+      net.drops().begin(), net.drops().end(),
+      [reason](const test::TestDrop& d) { return !d.control && d.reason == reason; }));
+}
+
+TEST(AodvProtocol, ExpandingRingFindsADestinationFourHopsAwayAtTtlFive) {
+  TestNetwork net(line(5), aodv_params({{"enable_hello", false}}), true);
+  net.send(0, 4, 1);
+  net.run_until(s(2));
+  const auto* d = delivery_of(net, 1);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->receiver, 4U);
+  EXPECT_EQ(d->hops, 4U);
+  // TTL 1 and TTL 3 time out after 2 * 40 ms * (ttl + 2) = 240 and 400 ms; TTL 5 reaches it,
+  // each of the 4 RREQ transmissions after a jitter of at most 10 ms.
+  const SimTime latency = d->delivered_at - d->sent_at;
+  EXPECT_GE(latency, s(0.640));
+  EXPECT_LE(latency, s(0.640 + 4 * 0.010 + 0.002));
+  EXPECT_EQ(net.count(0, "route_discoveries"), 3U);
+
+  // Forward and reverse routes along the line, with precursors.
+  for (NodeId n = 0; n < 4; ++n) {
+    const RouteEntry* to_destination = net.valid_route(n, 4);
+    ASSERT_NE(to_destination, nullptr) << n;
+    EXPECT_EQ(to_destination->next_hop, n + 1);
+    EXPECT_EQ(to_destination->hop_count, 4 - n);
+    if (n > 0) {
+      EXPECT_EQ(to_destination->precursors, std::vector<NodeId>{n - 1}) << n;
+    }
+  }
+  for (NodeId n = 1; n <= 4; ++n) {
+    const RouteEntry* to_origin = net.valid_route(n, 0);
+    ASSERT_NE(to_origin, nullptr) << n;
+    EXPECT_EQ(to_origin->next_hop, n - 1);
+    EXPECT_EQ(to_origin->hop_count, n);
+  }
+  EXPECT_EQ(net.find_loop(), "");
+}
+
+TEST(AodvProtocol, IntermediateNodeWithAHelloRouteRepliesAndSendsAGratuitousReply) {
+  TestNetwork net(line(5), aodv_params(), true);
+  net.send(0, 4, 1);
+  net.run_until(s(2));
+  const auto* d = delivery_of(net, 1);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->hops, 4U);
+  // By the TTL 3 ring (240 ms) node 3 knows node 4 from its HELLOs and answers for it.
+  const SimTime latency = d->delivered_at - d->sent_at;
+  EXPECT_GE(latency, s(0.240));
+  EXPECT_LE(latency, s(0.240 + 3 * 0.010 + 0.002));
+  EXPECT_EQ(net.count(0, "route_discoveries"), 2U);
+  EXPECT_EQ(net.count(4, "control_rrep"), 0U);  // the destination never replied
+  EXPECT_GE(net.count(3, "control_rrep"), 2U);  // the reply and the gratuitous reply
+  // The gratuitous RREP gave the destination its route back to the originator.
+  const RouteEntry* back = net.valid_route(4, 0);
+  ASSERT_NE(back, nullptr);
+  EXPECT_EQ(back->next_hop, 3U);
+  EXPECT_EQ(back->hop_count, 4U);
+  // Node 3 replied for a neighbour: it asked node 2 for a RREP-ACK and got it.
+  EXPECT_EQ(net.count(2, "control_rrep_ack"), 1U);
+  EXPECT_EQ(net.count("blacklisted"), 0U);
+}
+
+// Node 0 reaches node 2 through node 1 or node 3 (both two hops).
+std::vector<Vec2> diamond() { return {{0, 0}, {100, 0}, {200, 0}, {100, 60}}; }
+
+TEST(AodvProtocol, StaleSequenceNumberDoesNotReplaceAFresherRoute) {
+  TestNetwork net(diamond(), aodv_params({{"enable_hello", false}}), true);
+  net.send(0, 2, 1);
+  net.run_until(s(1));
+  ASSERT_NE(delivery_of(net, 1), nullptr);
+  const RouteEntry* route = net.valid_route(0, 2);
+  ASSERT_NE(route, nullptr);
+  const RouteEntry before = *route;
+  ASSERT_EQ(before.hop_count, 2U);
+  const NodeId other = before.next_hop == 1 ? 3 : 1;
+
+  // An older sequence number loses even with fewer hops.
+  Rrep stale;
+  stale.destination = 2;
+  stale.destination_seq = before.seq - 1;
+  stale.originator = 0;
+  stale.hop_count = 0;
+  stale.lifetime_ms = 10000;
+  net.inject(0, stale, other);
+  route = net.valid_route(0, 2);
+  ASSERT_NE(route, nullptr);
+  EXPECT_EQ(route->next_hop, before.next_hop);
+  EXPECT_EQ(route->seq, before.seq);
+  EXPECT_EQ(route->hop_count, 2U);
+
+  // The same sequence number with more hops loses too.
+  Rrep longer = stale;
+  longer.destination_seq = before.seq;
+  longer.hop_count = 5;
+  net.inject(0, longer, other);
+  EXPECT_EQ(net.valid_route(0, 2)->next_hop, before.next_hop);
+
+  // The same sequence number with fewer hops wins, and a newer one wins with more hops.
+  Rrep shorter = longer;
+  shorter.hop_count = 0;
+  net.inject(0, shorter, other);
+  EXPECT_EQ(net.valid_route(0, 2)->next_hop, other);
+  EXPECT_EQ(net.valid_route(0, 2)->hop_count, 1U);
+  Rrep newer = longer;
+  newer.destination_seq = before.seq + 1;
+  newer.hop_count = 3;
+  net.inject(0, newer, before.next_hop);
+  EXPECT_EQ(net.valid_route(0, 2)->next_hop, before.next_hop);
+  EXPECT_EQ(net.valid_route(0, 2)->seq, before.seq + 1);
+  EXPECT_EQ(net.valid_route(0, 2)->hop_count, 4U);
+
+  // A RREQ carrying an older originator sequence number does not re-point the reverse route.
+  const RouteEntry* reverse = net.valid_route(2, 0);
+  ASSERT_NE(reverse, nullptr);
+  const NodeId reverse_hop = reverse->next_hop;
+  Rreq old;
+  old.originator = 0;
+  old.originator_seq = reverse->seq - 1;
+  old.id = 999;
+  old.destination = 7;
+  old.ttl = 1;
+  net.inject(2, old, reverse_hop == 1 ? 3 : 1);
+  EXPECT_EQ(net.valid_route(2, 0)->next_hop, reverse_hop);
+}
+
+TEST(AodvProtocol, RerrFromABrokenLinkReachesEveryPrecursorUpstream) {
+  TestNetwork net(line(5), aodv_params({{"enable_hello", false}}), true);
+  net.send(0, 4, 1);
+  net.run_until(s(1));
+  ASSERT_NE(delivery_of(net, 1), nullptr);
+  const std::uint32_t seq = net.valid_route(0, 4)->seq;
+
+  net.move(4, {400, 500});  // the destination leaves
+  net.send(0, 4, 2);
+  net.run_for(s(0.1));
+  EXPECT_EQ(delivery_of(net, 2), nullptr);
+  EXPECT_EQ(net.count(3, "link_failures"), 1U);
+  // Node 3 reports the break to its precursor 2, which tells 1, which tells 0.
+  for (NodeId n = 1; n <= 3; ++n) EXPECT_EQ(net.count(n, "control_rerr"), 1U) << n;
+  EXPECT_EQ(net.count(0, "control_rerr"), 0U);  // the source has no precursors
+  for (NodeId n = 0; n <= 2; ++n) {
+    const bool heard = std::any_of(
+        net.receptions().begin(), net.receptions().end(), [n](const test::Reception& r) {
+          return r.receiver == n && r.from == n + 1 && !r.header.empty() && r.header[0] == 3;
+        });
+    EXPECT_TRUE(heard) << "node " << n << " got no RERR from " << n + 1;
+  }
+  for (NodeId n = 0; n <= 3; ++n) {
+    EXPECT_EQ(net.valid_route(n, 4), nullptr) << n;
+    const auto& entries = net.aodv(n).routing_table().entries();
+    ASSERT_TRUE(entries.contains(4));
+    EXPECT_EQ(entries.at(4).state, RouteState::invalid);
+    EXPECT_EQ(entries.at(4).seq, seq + 1) << n;  // incremented where the link broke
+  }
+  // Routes that did not use the broken link survive.
+  EXPECT_NE(net.valid_route(3, 0), nullptr);
+
+  // A new message finds no route; the discovery gives up and drops it as no_route.
+  net.send(0, 4, 3);
+  net.run_for(s(15));
+  EXPECT_EQ(delivery_of(net, 3), nullptr);
+  EXPECT_EQ(drops_with(net, DropReason::no_route), 1U);
+  EXPECT_FALSE(net.aodv(0).discovering(4));
+  EXPECT_EQ(net.aodv(0).request_queue().size(), 0U);
+}
+
+TEST(AodvProtocol, HelloLossBreaksTheLinkWithoutMacFeedback) {
+  TestNetwork net(line(3), aodv_params(), false);
+  net.send(0, 2, 1);
+  net.run_until(s(1));
+  ASSERT_NE(delivery_of(net, 1), nullptr);
+  net.move(2, {200, 500});
+  const SimTime left = net.now();
+  net.run_until(left + s(0.9));
+  EXPECT_NE(net.valid_route(0, 2), nullptr);  // too early to notice
+  net.run_until(left + s(4));
+  EXPECT_EQ(net.valid_route(1, 2), nullptr);
+  EXPECT_EQ(net.valid_route(0, 2), nullptr);
+  EXPECT_EQ(net.count(1, "link_breaks"), 1U);
+  EXPECT_EQ(net.count(1, "control_rerr"), 1U);
+  EXPECT_EQ(net.count(1, "link_failures"), 0U);
+}
+
+TEST(AodvProtocol, RouteIsRepairedThroughAnotherRelayWhenTheMiddleRobotLeaves) {
+  std::vector<Vec2> positions = diamond();
+  positions[3] = {1000, 1000};  // the spare relay starts far away
+  TestNetwork net(positions, aodv_params(), true);
+  net.send(0, 2, 1);
+  net.run_until(s(1));
+  ASSERT_NE(delivery_of(net, 1), nullptr);
+  EXPECT_EQ(net.valid_route(0, 2)->next_hop, 1U);
+
+  net.move(1, {100, -900});
+  net.move(3, {100, 60});
+  std::uint64_t id = 2;
+  for (int k = 0; k < 20; ++k) {
+    net.send(0, 2, id++);
+    net.run_for(s(0.1));
+    EXPECT_EQ(net.find_loop(), "");
+  }
+  net.run_for(s(1));
+  const RouteEntry* route = net.valid_route(0, 2);
+  ASSERT_NE(route, nullptr);
+  EXPECT_EQ(route->next_hop, 3U);
+  EXPECT_EQ(route->hop_count, 2U);
+  // Only the message in flight when the link broke is lost.
+  std::size_t delivered = 0;
+  for (std::uint64_t m = 2; m < id; ++m) delivered += delivery_of(net, m) != nullptr ? 1 : 0;
+  EXPECT_GE(delivered, 19U);
+  EXPECT_EQ(delivery_of(net, 21)->hops, 2U);
+}
+
+TEST(AodvProtocol, LocalRepairSavesThePacketAndReportsNoBreakForItsDestination) {
+  // 0 - 1 - 2 - 3 on a line; the spare 4 replaces relay 2.
+  std::vector<Vec2> positions = line(4);
+  positions.emplace_back(1000, 1000);
+  TestNetwork net(positions, aodv_params({{"enable_local_repair", true}, {"enable_hello", false}}),
+                  true);
+  net.send(0, 3, 1);
+  net.run_until(s(1.5));
+  ASSERT_NE(delivery_of(net, 1), nullptr);
+  net.move(2, {200, 900});
+  net.move(4, {200, 40});
+  net.send(0, 3, 2);
+  net.run_for(s(1));
+  const auto* d = delivery_of(net, 2);
+  ASSERT_NE(d, nullptr) << "the packet that met the break was not repaired";
+  EXPECT_EQ(d->hops, 3U);
+  EXPECT_EQ(net.count(1, "local_repairs"), 1U);
+  // Node 1 reports that node 2 itself is gone, but not destination 3.
+  for (const auto& r : net.receptions()) {
+    const auto message = decode(r.header);
+    if (!message || !std::holds_alternative<Rerr>(*message)) continue;
+    for (const auto& d : std::get<Rerr>(*message).destinations) EXPECT_NE(d.destination, 3U);
+  }
+  EXPECT_EQ(net.valid_route(1, 3)->next_hop, 4U);
+  EXPECT_EQ(net.valid_route(0, 3)->next_hop, 1U);  // the source never noticed
+}
+
+TEST(AodvProtocol, UnacknowledgedRrepBlacklistsAUnidirectionalLink) {
+  TestNetwork net(line(3), aodv_params({{"enable_hello", false}, {"rrep_ack_required", true}}),
+                  false);
+  net.block(1, 0);  // node 0 hears nobody; node 1 hears node 0
+  net.send(0, 2, 1);
+  net.run_until(s(0.5));
+  EXPECT_EQ(net.count(1, "blacklisted"), 1U);
+  const std::uint64_t relayed = net.count(1, "control_rreq");
+  net.run_until(s(12));
+  EXPECT_EQ(delivery_of(net, 1), nullptr);
+  // Later RREQs from node 0 (at least the TTL 3 and 5 rings) are ignored while blacklisted.
+  EXPECT_GE(net.count(0, "route_discoveries"), 3U);
+  EXPECT_EQ(net.count(1, "control_rreq"), relayed);
+  EXPECT_EQ(drops_with(net, DropReason::no_route), 1U);
+}
+
+TEST(AodvProtocol, AcknowledgedRrepsBlacklistNobody) {
+  TestNetwork net(line(4), aodv_params({{"enable_hello", false}, {"rrep_ack_required", true}}),
+                  false);
+  net.send(0, 3, 1);
+  net.run_until(s(1));
+  ASSERT_NE(delivery_of(net, 1), nullptr);
+  EXPECT_EQ(net.count("control_rrep_ack"), 3U);  // one per RREP hop
+  EXPECT_EQ(net.count("blacklisted"), 0U);
+}
+
+TEST(AodvProtocol, BufferIsBoundedAndTimedOut) {
+  // Node 1 is out of everyone's reach.
+  TestNetwork net({{0, 0}, {500, 500}}, aodv_params({{"max_queue_len", std::int64_t{4}}}), true);
+  for (std::uint64_t m = 0; m < 6; ++m) net.send(0, 1, m);
+  EXPECT_EQ(drops_with(net, DropReason::queue_full), 2U);
+  EXPECT_EQ(net.aodv(0).request_queue().size(), 4U);
+  net.run_until(s(20));
+  EXPECT_EQ(drops_with(net, DropReason::no_route), 4U);  // given up after the last retry
+
+  TestNetwork timed({{0, 0}, {500, 500}}, aodv_params({{"max_queue_time_s", 0.5}}), true);
+  timed.send(0, 1, 0);
+  timed.run_until(s(0.6));
+  EXPECT_EQ(drops_with(timed, DropReason::buffer_timeout), 1U);
+  EXPECT_EQ(timed.aodv(0).request_queue().size(), 0U);
+}
+
+TEST(AodvProtocol, DiscoveryGivesUpAfterRreqRetriesAtTheNetworkDiameter) {
+  TestNetwork net({{0, 0}, {500, 500}}, aodv_params({{"enable_hello", false}}), true);
+  net.send(0, 1, 0);
+  // Rings at TTL 1, 3, 5, 7 (240 + 400 + 560 + 720 ms), then TTL 35 twice (2.8 s, 5.6 s).
+  net.run_until(s(1.92 + 2.8 + 5.6 - 0.01));
+  EXPECT_TRUE(net.aodv(0).discovering(1));
+  EXPECT_EQ(net.count(0, "route_discoveries"), 6U);
+  net.run_until(s(1.92 + 2.8 + 5.6 + 0.01));
+  EXPECT_FALSE(net.aodv(0).discovering(1));
+  EXPECT_EQ(drops_with(net, DropReason::no_route), 1U);
+  EXPECT_EQ(net.count(0, "control_rreq"), 6U);
+}
+
+TEST(AodvProtocol, RreqOriginationIsRateLimited) {
+  std::vector<Vec2> positions{{0, 0}};
+  for (int i = 0; i < 15; ++i) positions.emplace_back(1000 + 200.0 * i, 1000);
+  TestNetwork net(positions, aodv_params({{"enable_hello", false}}), true);
+  for (NodeId d = 1; d <= 15; ++d) net.send(0, d, d);
+  net.run_until(s(0.999));
+  EXPECT_EQ(net.count(0, "route_discoveries"), 10U);
+  net.run_until(s(1.01));
+  EXPECT_GT(net.count(0, "route_discoveries"), 10U);
+  EXPECT_LE(net.count(0, "route_discoveries"), 20U);
+}
+
+TEST(AodvProtocol, BroadcastsAreRebroadcastOnceByEveryNode) {
+  TestNetwork net(line(5), aodv_params({{"enable_hello", false}}), true);
+  net.send(0, kBroadcast, 7);
+  net.run_until(s(0.1));
+  ASSERT_EQ(net.deliveries().size(), 4U);
+  for (const auto& d : net.deliveries()) EXPECT_EQ(d.hops, d.receiver);
+  for (NodeId n = 1; n < 5; ++n) EXPECT_EQ(net.count(n, "test_forwards"), 1U) << n;
+  EXPECT_GT(net.count("duplicates"), 0U);
+
+  TestNetwork local(line(5), aodv_params({{"enable_hello", false}, {"enable_broadcast", false}}),
+                    true);
+  local.send(0, kBroadcast, 7);
+  local.run_until(s(0.1));
+  ASSERT_EQ(local.deliveries().size(), 1U);
+  EXPECT_EQ(local.deliveries()[0].receiver, 1U);
+}
+
+TEST(AodvProtocol, DataTtlLimitsForwarding) {
+  TestNetwork net(line(5), aodv_params({{"data_ttl", std::int64_t{2}}}), true);
+  net.send(0, 4, 1);
+  net.run_until(s(2));
+  EXPECT_EQ(delivery_of(net, 1), nullptr);
+  EXPECT_EQ(drops_with(net, DropReason::ttl_expired), 1U);
+  EXPECT_EQ(net.drops().front().node, 2U);
+}
+
+// Random waypoint over 30 robots: after every 0.1 s step, the union of the route tables must
+// hold no loop, with and without link-layer feedback.
+void random_mobility_run(bool mac_feedback, std::uint64_t seed) {
+  constexpr std::uint32_t kRobots = 30;
+  constexpr double kSide = 400.0;
+  RandomStream random(seed);
+  std::vector<Vec2> positions;
+  std::vector<Vec2> targets;
+  std::vector<double> speeds;
+  for (std::uint32_t i = 0; i < kRobots; ++i) {
+    positions.emplace_back(random.uniform(0, kSide), random.uniform(0, kSide));
+    targets.emplace_back(random.uniform(0, kSide), random.uniform(0, kSide));
+    speeds.push_back(random.uniform(1.0, 20.0));
+  }
+  TestNetwork net(positions, aodv_params(), mac_feedback, seed);
+  std::uint64_t id = 0;
+  for (int step = 0; step < 500; ++step) {
+    for (std::uint32_t i = 0; i < kRobots; ++i) {
+      Vec2 p = net.positions()[i];
+      const Vec2 to = targets[i] - p;
+      const double stride = speeds[i] * 0.1;
+      if (to.norm() <= stride) {
+        p = targets[i];
+        targets[i] = {random.uniform(0, kSide), random.uniform(0, kSide)};
+        speeds[i] = random.uniform(1.0, 20.0);
+      } else {
+        p += to / to.norm() * stride;
+      }
+      net.move(i, p);
+    }
+    for (int k = 0; k < 4; ++k) {
+      const auto source = static_cast<NodeId>(random.below(kRobots));
+      const auto destination =
+          static_cast<NodeId>((source + 1 + random.below(kRobots - 1)) % kRobots);
+      net.send(source, destination, id++);
+    }
+    net.run_for(s(0.1));
+    const std::string loop = net.find_loop();
+    ASSERT_EQ(loop, "") << "step " << step;
+  }
+  net.run_for(s(2));
+  EXPECT_EQ(net.find_loop(), "");
+  const double pdr = static_cast<double>(net.deliveries().size()) / static_cast<double>(id);
+  EXPECT_GT(pdr, 0.5) << "delivered " << net.deliveries().size() << " of " << id;
+  EXPECT_GT(net.count("control_rerr"), 0U);  // links did break
+  for (const auto& d : net.deliveries()) EXPECT_LE(d.hops, kRobots - 1);
+}
+
+TEST(AodvProtocol, NoRoutingLoopUnderRandomMobilityWithMacFeedback) {
+  random_mobility_run(true, 1);
+}
+TEST(AodvProtocol, NoRoutingLoopUnderRandomMobilityWithHellosOnly) {
+  random_mobility_run(false, 2);
+}
+TEST(AodvProtocol, NoRoutingLoopUnderRandomMobilityAnotherSeed) { random_mobility_run(true, 3); }
+
+}  // namespace
+}  // namespace swarmnet::aodv

@@ -1,0 +1,253 @@
+// The AODV units alone: route table, request queue, neighbours, id cache, duplicate detection,
+// sequence numbers and parameters.
+#include <gtest/gtest.h>
+
+#include <utility>
+#include <vector>
+
+#include "aodv_parameters.hpp"
+#include "duplicate_detection.hpp"
+#include "id_cache.hpp"
+#include "neighbors.hpp"
+#include "request_queue.hpp"
+#include "routing_table.hpp"
+#include "sequence_number.hpp"
+
+namespace swarmnet::aodv {
+namespace {
+
+SimTime s(double seconds) { return from_seconds(seconds); }
+
+RouteEntry route(NodeId destination, NodeId next_hop, std::uint32_t hops, std::uint32_t seq,
+                 SimTime expires) {
+  RouteEntry e;
+  e.destination = destination;
+  e.next_hop = next_hop;
+  e.hop_count = hops;
+  e.seq = seq;
+  e.valid_seq = true;
+  e.expires = expires;
+  return e;
+}
+
+TEST(AodvSequenceNumber, ComparesWithRollover) {
+  EXPECT_TRUE(seq_newer(2, 1));
+  EXPECT_FALSE(seq_newer(1, 1));
+  EXPECT_FALSE(seq_newer(1, 2));
+  EXPECT_TRUE(seq_newer(0, 0xffffffff));  // wrapped
+  EXPECT_TRUE(seq_newer(5, 0xfffffff0));
+  EXPECT_TRUE(seq_not_older(1, 1));
+  EXPECT_FALSE(seq_not_older(0xffffffff, 0));
+}
+
+TEST(AodvRoutingTable, ValidRouteExpiresToInvalidThenIsDeleted) {
+  RoutingTable table(s(15));
+  table.insert(route(7, 3, 2, 10, s(3)));
+  ASSERT_NE(table.find_valid(7, s(3)), nullptr);  // expiry is inclusive
+  EXPECT_EQ(table.find_valid(7, s(3.5)), nullptr);
+  RouteEntry* entry = table.find(7, s(3.5));
+  ASSERT_NE(entry, nullptr);
+  EXPECT_EQ(entry->state, RouteState::invalid);
+  EXPECT_EQ(entry->seq, 11U);  // the sequence number is remembered, and incremented
+  EXPECT_EQ(entry->expires, s(18.5));
+  EXPECT_NE(table.find(7, s(18.5)), nullptr);
+  EXPECT_EQ(table.find(7, s(18.6)), nullptr);
+  EXPECT_EQ(table.size(), 0U);
+}
+
+TEST(AodvRoutingTable, RouteInSearchDoesNotExpireByItself) {
+  RoutingTable table(s(15));
+  RouteEntry e = route(7, kNoNode, 1, 0, s(1));
+  e.state = RouteState::in_search;
+  table.insert(e);
+  table.purge(s(100));
+  ASSERT_NE(table.find(7, s(100)), nullptr);
+  EXPECT_EQ(table.find_valid(7, s(100)), nullptr);
+}
+
+TEST(AodvRoutingTable, RefreshExtendsOnlyValidRoutesAndNeverShortens) {
+  RoutingTable table(s(15));
+  table.insert(route(7, 3, 2, 10, s(10)));
+  EXPECT_TRUE(table.refresh(7, s(3), s(1)));
+  EXPECT_EQ(table.find(7, s(1))->expires, s(10));
+  EXPECT_TRUE(table.refresh(7, s(3), s(9)));
+  EXPECT_EQ(table.find(7, s(9))->expires, s(12));
+  EXPECT_FALSE(table.refresh(8, s(3), s(9)));
+  table.invalidate(*table.find(7, s(9)), s(9));
+  EXPECT_FALSE(table.refresh(7, s(3), s(9)));
+}
+
+TEST(AodvRoutingTable, ListsValidDestinationsThroughANextHop) {
+  RoutingTable table(s(15));
+  table.insert(route(7, 3, 2, 10, s(10)));
+  table.insert(route(3, 3, 1, 4, s(10)));
+  table.insert(route(9, 4, 2, 1, s(10)));
+  table.insert(route(5, 3, 3, 8, s(10)));
+  table.invalidate(*table.find(5, s(0)), s(0));
+  const auto via = table.valid_destinations_via(3, s(1));
+  ASSERT_EQ(via.size(), 2U);
+  EXPECT_EQ(via[0], (UnreachableDestination{3, 4}));
+  EXPECT_EQ(via[1], (UnreachableDestination{7, 10}));
+}
+
+TEST(AodvRoutingTable, PrecursorsAreAUniqueSortedSet) {
+  RouteEntry e;
+  EXPECT_TRUE(e.insert_precursor(5));
+  EXPECT_TRUE(e.insert_precursor(2));
+  EXPECT_FALSE(e.insert_precursor(5));
+  EXPECT_EQ(e.precursors, (std::vector<NodeId>{2, 5}));
+  EXPECT_TRUE(e.has_precursor(2));
+  EXPECT_FALSE(e.has_precursor(3));
+}
+
+TEST(AodvRoutingTable, BlacklistExpires) {
+  RoutingTable table(s(15));
+  table.blacklist(4, s(5.6));
+  EXPECT_TRUE(table.is_blacklisted(4, s(5)));
+  EXPECT_FALSE(table.is_blacklisted(3, s(5)));
+  EXPECT_FALSE(table.is_blacklisted(4, s(6)));
+}
+
+class AodvRequestQueue : public ::testing::Test {
+ protected:
+  static Packet packet(std::uint64_t uid, NodeId destination) {
+    Packet p;
+    p.uid = uid;
+    p.source = 0;
+    p.destination = destination;
+    p.message_id = uid;
+    return p;
+  }
+  RequestQueue queue_{3, from_seconds(30),
+                      [this](const Packet& p, DropReason r) { drops_.emplace_back(p.uid, r); }};
+  std::vector<std::pair<std::uint64_t, DropReason>> drops_;
+};
+
+TEST_F(AodvRequestQueue, FullQueueDropsTheOldestAsQueueFull) {
+  EXPECT_TRUE(queue_.enqueue(packet(1, 5), s(0)));
+  EXPECT_TRUE(queue_.enqueue(packet(2, 6), s(1)));
+  EXPECT_FALSE(queue_.enqueue(packet(2, 6), s(1)));  // same packet twice
+  EXPECT_TRUE(queue_.enqueue(packet(3, 5), s(2)));
+  EXPECT_TRUE(queue_.enqueue(packet(4, 5), s(3)));
+  ASSERT_EQ(drops_.size(), 1U);
+  EXPECT_EQ(drops_[0], std::make_pair(std::uint64_t{1}, DropReason::queue_full));
+  EXPECT_EQ(queue_.size(), 3U);
+}
+
+TEST_F(AodvRequestQueue, TakeReturnsOneDestinationInArrivalOrder) {
+  queue_.enqueue(packet(1, 5), s(0));
+  queue_.enqueue(packet(2, 6), s(0));
+  queue_.enqueue(packet(3, 5), s(0));
+  EXPECT_TRUE(queue_.has(5));
+  const auto taken = queue_.take(5, s(1));
+  ASSERT_EQ(taken.size(), 2U);
+  EXPECT_EQ(taken[0].uid, 1U);
+  EXPECT_EQ(taken[1].uid, 3U);
+  EXPECT_FALSE(queue_.has(5));
+  EXPECT_EQ(queue_.size(), 1U);
+  EXPECT_TRUE(drops_.empty());
+}
+
+TEST_F(AodvRequestQueue, ExpiredPacketsAreDroppedAsBufferTimeout) {
+  queue_.enqueue(packet(1, 5), s(0));
+  queue_.enqueue(packet(2, 5), s(10));
+  EXPECT_EQ(queue_.next_expiry(), s(30));
+  queue_.purge(s(30));  // not yet: strictly after its expiry
+  EXPECT_TRUE(drops_.empty());
+  queue_.purge(s(31));
+  ASSERT_EQ(drops_.size(), 1U);
+  EXPECT_EQ(drops_[0], std::make_pair(std::uint64_t{1}, DropReason::buffer_timeout));
+  queue_.drop_destination(5, DropReason::no_route, s(31));
+  ASSERT_EQ(drops_.size(), 2U);
+  EXPECT_EQ(drops_[1], std::make_pair(std::uint64_t{2}, DropReason::no_route));
+  EXPECT_EQ(queue_.next_expiry(), kTimeNever);
+}
+
+TEST(AodvNeighbors, ExpireAfterTheirLifetimeOrWhenClosed) {
+  Neighbors neighbors;
+  neighbors.update(3, s(2), s(0));
+  neighbors.update(4, s(2), s(0));
+  neighbors.update(4, s(2), s(1));  // heard again
+  neighbors.update(5, s(2), s(1));
+  neighbors.update(5, s(0.5), s(1));  // a shorter lifetime never shortens
+  EXPECT_EQ(neighbors.expiry(5), s(3));
+  EXPECT_TRUE(neighbors.is_neighbor(3, s(2)));
+  EXPECT_TRUE(neighbors.purge(s(2)).empty());
+  neighbors.close(5);
+  EXPECT_FALSE(neighbors.is_neighbor(5, s(2)));
+  EXPECT_EQ(neighbors.purge(s(2.5)), (std::vector<NodeId>{3, 5}));
+  EXPECT_EQ(neighbors.size(), 1U);
+  EXPECT_TRUE(neighbors.is_neighbor(4, s(2.5)));
+  EXPECT_EQ(neighbors.purge(s(3.1)), (std::vector<NodeId>{4}));
+}
+
+TEST(AodvIdCache, RemembersPairsForItsLifetime) {
+  IdCache cache(s(5.6));
+  EXPECT_FALSE(cache.is_duplicate(1, 10, s(0)));
+  EXPECT_TRUE(cache.is_duplicate(1, 10, s(1)));
+  EXPECT_FALSE(cache.is_duplicate(2, 10, s(1)));  // other originator
+  EXPECT_FALSE(cache.is_duplicate(1, 11, s(1)));  // other id
+  EXPECT_TRUE(cache.contains(1, 10, s(5.6)));
+  EXPECT_FALSE(cache.is_duplicate(1, 10, s(5.7)));  // forgotten, then recorded again
+  cache.purge(s(6.7));
+  EXPECT_EQ(cache.size(), 1U);
+}
+
+TEST(AodvDuplicateDetection, RecognisesCopiesBySourceAndUid) {
+  DuplicateDetection dpd(s(5.6));
+  Packet p;
+  p.source = 3;
+  p.uid = 99;
+  EXPECT_FALSE(dpd.is_duplicate(p, s(0)));
+  p.hops = 4;  // a relayed copy
+  EXPECT_TRUE(dpd.is_duplicate(p, s(0.1)));
+  p.uid = 100;
+  EXPECT_FALSE(dpd.is_duplicate(p, s(0.1)));
+}
+
+TEST(AodvParameters, DefaultsAreNs3sAndDerivedTimesFollowRfc3561) {
+  ParamSet params;
+  for (const ParamSpec& spec : parameter_schema()) {
+    params.set(spec.name, spec.default_value);
+    if (spec.type == ParamType::real || spec.type == ParamType::integer) {
+      EXPECT_FALSE(spec.unit.empty()) << spec.name << " has no unit";
+    }
+    EXPECT_FALSE(spec.help.empty()) << spec.name;
+  }
+  const AodvParameters p = parameters_from(params);
+  EXPECT_EQ(p.hello_interval, s(1));
+  EXPECT_EQ(p.allowed_hello_loss, 2U);
+  EXPECT_EQ(p.active_route_timeout, s(3));
+  EXPECT_EQ(p.net_diameter, 35U);
+  EXPECT_EQ(p.node_traversal_time, s(0.04));
+  EXPECT_EQ(p.net_traversal_time, s(2.8));
+  EXPECT_EQ(p.path_discovery_time, s(5.6));
+  EXPECT_EQ(p.next_hop_wait, s(0.05));
+  EXPECT_EQ(p.my_route_timeout, s(11.2));
+  EXPECT_EQ(p.blacklist_timeout, s(5.6));
+  EXPECT_EQ(p.delete_period, s(15));
+  EXPECT_EQ(p.rreq_retries, 2U);
+  EXPECT_EQ(p.rreq_rate_limit, 10U);
+  EXPECT_EQ(p.rerr_rate_limit, 10U);
+  EXPECT_EQ(p.ttl_start, 1U);
+  EXPECT_EQ(p.ttl_increment, 2U);
+  EXPECT_EQ(p.ttl_threshold, 7U);
+  EXPECT_EQ(p.timeout_buffer, 2U);
+  EXPECT_EQ(p.max_queue_len, 64U);
+  EXPECT_EQ(p.max_queue_time, s(30));
+  EXPECT_FALSE(p.destination_only);
+  EXPECT_TRUE(p.gratuitous_reply);
+  EXPECT_TRUE(p.enable_hello);
+  EXPECT_FALSE(p.enable_local_repair);
+  EXPECT_EQ(p.max_repair_ttl(), 10U);
+
+  params.set("node_traversal_time_s", 0.01);
+  params.set("delete_period_s", 2.0);
+  const AodvParameters q = parameters_from(params);
+  EXPECT_EQ(q.net_traversal_time, s(0.7));
+  EXPECT_EQ(q.path_discovery_time, s(1.4));
+  EXPECT_EQ(q.delete_period, s(2));
+}
+
+}  // namespace
+}  // namespace swarmnet::aodv
