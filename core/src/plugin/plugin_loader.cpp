@@ -36,6 +36,17 @@ PluginLoader::PluginLoader(std::vector<std::filesystem::path> scenario_dirs)
     search_path_.push_back(std::move(dir));
   }
   search_path_.emplace_back(SWARMNET_BUILD_PLUGIN_DIR);
+  // The install prefix, found from the running command (bin/swarmnet -> lib/swarmnet/plugins),
+  // so an installation moved or installed with --prefix finds its own plugins; then the prefix
+  // configured at build time.
+  std::error_code ec;
+  const auto executable = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec && executable.parent_path().filename() == "bin") {
+    auto relative =
+        executable.parent_path().parent_path() / SWARMNET_INSTALL_LIBDIR / "swarmnet" / "plugins";
+    if (relative != std::filesystem::path(SWARMNET_INSTALL_PLUGIN_DIR))
+      search_path_.push_back(relative);
+  }
   search_path_.emplace_back(SWARMNET_INSTALL_PLUGIN_DIR);
 }
 
@@ -78,8 +89,9 @@ std::shared_ptr<PluginLibrary> PluginLoader::find(const std::string& name) {
       throw PluginError("plugin '" + name + "': " + error.what());
     }
   }
-  throw PluginError("plugin '" + name + "' not found; searched:" + tried.str() +
-                    "\n(add a directory with plugin_paths in the scenario or SWARMNET_PLUGIN_PATH)");
+  throw PluginError(
+      "plugin '" + name + "' not found; searched:" + tried.str() +
+      "\n(add a directory with plugin_paths in the scenario or SWARMNET_PLUGIN_PATH)");
 }
 
 std::shared_ptr<PluginLibrary> PluginLoader::find(const std::string& name, PluginKind expected) {
@@ -102,13 +114,14 @@ std::vector<std::shared_ptr<PluginLibrary>> PluginLoader::discover(
     std::vector<std::filesystem::path> files;
     for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
       const std::string file = entry.path().filename().string();
-      if (file.starts_with(kFilePrefix) && file.ends_with(kFileSuffix)) files.push_back(entry.path());
+      if (file.starts_with(kFilePrefix) && file.ends_with(kFileSuffix))
+        files.push_back(entry.path());
     }
     std::sort(files.begin(), files.end());  // directory order is not deterministic
     for (const auto& path : files) {
       const std::string file = path.filename().string();
-      const std::string name = file.substr(kFilePrefix.size(),
-                                           file.size() - kFilePrefix.size() - kFileSuffix.size());
+      const std::string name =
+          file.substr(kFilePrefix.size(), file.size() - kFilePrefix.size() - kFileSuffix.size());
       if (seen.contains(name)) continue;
       seen.insert(name);
       try {
