@@ -1,0 +1,173 @@
+#!/usr/bin/env python3
+"""Compares a SwarmNet run with its ns-3 replay (swarmnet_ns3_replay) and prints one row.
+
+    python3 tests/validation/compare.py RUN_DIR NS3_JSON [--pdr-points 3] [--delay-pct 15]
+                                        [--min-speedup 10] [--control-pct 20] [--format text]
+
+RUN_DIR is a SwarmNet run directory (or its summary.json). Compared: delivery ratio (difference in
+percentage points), mean delay (difference in % of ns-3's), 95th-percentile delay, MAC
+transmissions (frames put on the air, ACKs included), AODV control packets per delivered packet,
+and the CPU seconds of both network halves with their ratio. Exits 1 if a compared value is
+outside its tolerance, 2 on a usage or input error. Python standard library only.
+"""
+import argparse
+import json
+import math
+import os
+import sys
+
+DEFAULTS = {"pdr_points": 3.0, "delay_pct": 15.0, "min_speedup": None, "control_pct": None}
+
+
+def load_json(path):
+    if os.path.isdir(path):
+        path = os.path.join(path, "summary.json")
+    with open(path, encoding="utf-8") as f:
+        return json.load(f)
+
+
+def _pct(a, b):
+    """a relative to b, in % of b; None when undefined."""
+    if a is None or b is None or b == 0:
+        return None
+    return 100.0 * (a - b) / b
+
+
+def _per_delivered(doc):
+    control = doc.get("routing", {}).get("control_packets")
+    delivered = doc.get("packets", {}).get("delivered")
+    if not control or not delivered:
+        return None
+    return control / delivered
+
+
+def compare(swarmnet, ns3, pdr_points=3.0, delay_pct=15.0, min_speedup=None, control_pct=None):
+    """Returns a dict with both sides' values, the differences and the failed checks."""
+    row = {
+        "robots": swarmnet.get("robots"),
+        "sim_time_s": swarmnet.get("sim_time_s"),
+        "routing": ns3.get("routing_plugin"),
+        "unicast_sent": swarmnet["packets"]["sent"] - swarmnet["packets"].get("broadcast_sent", 0),
+        "pdr": [swarmnet["pdr"], ns3["pdr"]],
+        "delay_mean_s": [swarmnet["delay_s"]["mean"], ns3["delay_s"]["mean"]],
+        "delay_p95_s": [swarmnet["delay_s"]["p95"], ns3["delay_s"]["p95"]],
+        "hops_mean": [swarmnet.get("hops_mean"), ns3.get("hops_mean")],
+        "mac_tx_frames": [swarmnet["mac"]["tx_frames"], ns3["mac"]["tx_frames"]],
+        "control_per_delivered": [_per_delivered(swarmnet), _per_delivered(ns3)],
+        "cpu_s": [swarmnet["cpu_s"]["network"], ns3["cpu_s"]["network"]],
+    }
+    row["pdr_diff_points"] = 100.0 * (row["pdr"][0] - row["pdr"][1])
+    row["delay_mean_diff_pct"] = _pct(*row["delay_mean_s"])
+    row["delay_p95_diff_pct"] = _pct(*row["delay_p95_s"])
+    row["mac_tx_diff_pct"] = _pct(*row["mac_tx_frames"])
+    row["control_diff_pct"] = _pct(*row["control_per_delivered"])
+    cpu_sn, cpu_ns3 = row["cpu_s"]
+    row["speedup"] = cpu_ns3 / cpu_sn if cpu_sn > 0 else math.inf
+
+    failures = []
+    if abs(row["pdr_diff_points"]) > pdr_points:
+        failures.append(f"delivery ratio differs by {row['pdr_diff_points']:+.2f} points "
+                        f"(tolerance {pdr_points:g})")
+    d = row["delay_mean_diff_pct"]
+    if (row["delay_mean_s"][0] is None) != (row["delay_mean_s"][1] is None):
+        failures.append("mean delay: one side delivered nothing")
+    elif d is not None and abs(d) > delay_pct:
+        failures.append(f"mean delay differs by {d:+.1f}% (tolerance {delay_pct:g}%)")
+    if min_speedup is not None and row["speedup"] < min_speedup:
+        failures.append(f"SwarmNet is {row['speedup']:.1f}x faster than ns-3 "
+                        f"(needs {min_speedup:g}x)")
+    c = row["control_diff_pct"]
+    if control_pct is not None and c is not None and abs(c) > control_pct:
+        failures.append(f"control packets per delivered packet differ by {c:+.1f}% "
+                        f"(tolerance {control_pct:g}%)")
+    row["failures"] = failures
+    row["pass"] = not failures
+    return row
+
+
+def _ms(v):
+    return "-" if v is None else f"{1000.0 * v:.2f}"
+
+
+def _signed(v, unit=""):
+    return "-" if v is None else f"{v:+.1f}{unit}"
+
+
+HEADER = ("| N | routing | PDR SwarmNet | PDR ns-3 | diff (pts) | mean delay SwarmNet (ms) "
+          "| mean delay ns-3 (ms) | diff | p95 SwarmNet (ms) | p95 ns-3 (ms) | MAC tx SwarmNet "
+          "| MAC tx ns-3 | CPU SwarmNet (s) | CPU ns-3 (s) | speed-up | within targets |")
+RULE = "|" + "---|" * HEADER.count(" |")
+
+
+def markdown_cells(row):
+    return [
+        f"{row['pdr'][0]:.3f}", f"{row['pdr'][1]:.3f}", f"{row['pdr_diff_points']:+.1f}",
+        _ms(row["delay_mean_s"][0]), _ms(row["delay_mean_s"][1]),
+        _signed(row["delay_mean_diff_pct"], "%"),
+        _ms(row["delay_p95_s"][0]), _ms(row["delay_p95_s"][1]),
+        str(row["mac_tx_frames"][0]), str(row["mac_tx_frames"][1]),
+        f"{row['cpu_s'][0]:.3g}", f"{row['cpu_s'][1]:.3g}", f"{row['speedup']:.1f}x",
+        "yes" if row["pass"] else "no: " + "; ".join(row["failures"]),
+    ]
+
+
+def text_report(row):
+    lines = [
+        f"robots {row['robots']}, {row['sim_time_s']} s, {row['unicast_sent']} unicast messages",
+        f"  delivery ratio   SwarmNet {row['pdr'][0]:.4f}  ns-3 {row['pdr'][1]:.4f}  "
+        f"diff {row['pdr_diff_points']:+.2f} points",
+        f"  mean delay       SwarmNet {_ms(row['delay_mean_s'][0])} ms  "
+        f"ns-3 {_ms(row['delay_mean_s'][1])} ms  diff {_signed(row['delay_mean_diff_pct'], '%')}",
+        f"  p95 delay        SwarmNet {_ms(row['delay_p95_s'][0])} ms  "
+        f"ns-3 {_ms(row['delay_p95_s'][1])} ms  diff {_signed(row['delay_p95_diff_pct'], '%')}",
+        f"  MAC tx frames    SwarmNet {row['mac_tx_frames'][0]}  ns-3 {row['mac_tx_frames'][1]}  "
+        f"diff {_signed(row['mac_tx_diff_pct'], '%')}",
+    ]
+    if any(v is not None for v in row["control_per_delivered"]):
+        a, b = row["control_per_delivered"]
+        lines.append(f"  control/deliv.   SwarmNet {a if a is None else round(a, 3)}  "
+                     f"ns-3 {b if b is None else round(b, 3)}  "
+                     f"diff {_signed(row['control_diff_pct'], '%')}")
+    lines.append(f"  CPU (network)    SwarmNet {row['cpu_s'][0]:.3f} s  ns-3 {row['cpu_s'][1]:.3f} s"
+                 f"  SwarmNet {row['speedup']:.1f}x faster")
+    lines.append("  within tolerances" if row["pass"] else
+                 "  OUTSIDE TOLERANCES: " + "; ".join(row["failures"]))
+    return "\n".join(lines)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("swarmnet", help="SwarmNet run directory or its summary.json")
+    parser.add_argument("ns3", help="JSON written by swarmnet_ns3_replay")
+    parser.add_argument("--pdr-points", type=float, default=DEFAULTS["pdr_points"],
+                        help="largest delivery-ratio difference, percentage points (default 3)")
+    parser.add_argument("--delay-pct", type=float, default=DEFAULTS["delay_pct"],
+                        help="largest mean-delay difference, %% of ns-3's (default 15)")
+    parser.add_argument("--min-speedup", type=float, default=None,
+                        help="smallest ns-3 / SwarmNet network CPU ratio (default: not checked)")
+    parser.add_argument("--control-pct", type=float, default=None,
+                        help="largest difference of control packets per delivered packet, %% "
+                             "(default: not checked)")
+    parser.add_argument("--format", choices=["text", "markdown", "json"], default="text")
+    args = parser.parse_args(argv)
+    try:
+        swarmnet, ns3 = load_json(args.swarmnet), load_json(args.ns3)
+        row = compare(swarmnet, ns3, args.pdr_points, args.delay_pct, args.min_speedup,
+                      args.control_pct)
+    except (OSError, ValueError, KeyError, TypeError) as error:
+        print(f"compare.py: {error}", file=sys.stderr)
+        return 2
+    if args.format == "json":
+        print(json.dumps(row, indent=2))
+    elif args.format == "markdown":
+        print(HEADER)
+        print(RULE)
+        print("| " + " | ".join([str(row["robots"]), str(row["routing"])] + markdown_cells(row))
+              + " |")
+    else:
+        print(text_report(row))
+    return 0 if row["pass"] else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

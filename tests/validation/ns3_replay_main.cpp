@@ -1,0 +1,454 @@
+// swarmnet_ns3_replay: replays a SwarmNet run's mobility trace and traffic schedule in ns-3.37
+// (YansWifi 802.11a ad hoc at a constant 6 Mbps, log-distance propagation, UDP over IPv4, one
+// node per robot) with routing `direct`, `flooding` or `aodv`, and writes the same measures as
+// SwarmNet's summary.json as JSON. docs/validation.md explains the setup.
+#include <ns3/aodv-helper.h>
+#include <ns3/aodv-packet.h>
+#include <ns3/core-module.h>
+#include <ns3/internet-module.h>
+#include <ns3/mobility-module.h>
+#include <ns3/network-module.h>
+#include <ns3/ns2-mobility-helper.h>
+#include <ns3/wifi-module.h>
+#include <sys/resource.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "datagram_endpoint.hpp"
+#include "flooding_endpoint.hpp"
+#include "replay_metrics.hpp"
+#include "traffic_csv.hpp"
+
+namespace sv = swarmnet::validation;
+
+namespace {
+
+struct Options {
+  std::string run_dir;
+  std::string output;
+  std::string routing = "direct";
+  double duration_s = 0.0;  // 0: summary.json's sim_time_s
+  std::uint32_t seed = 1;
+  // Propagation and PHY.
+  double exponent = 3.0;
+  double reference_loss_db = 46.6777;
+  double reference_distance_m = 1.0;
+  double tx_power_dbm = 27.0531;  // received power at 120 m is -82 dBm with the values above
+  double rx_sensitivity_dbm = -101.0;
+  double cca_ed_threshold_dbm = -62.0;
+  double preamble_min_rssi_dbm = -82.0;
+  double preamble_threshold_db = 4.0;
+  double noise_figure_db = 7.0;
+  std::string error_model = "nist";  // what SwarmNet's sinr PHY implements
+  // MAC.
+  std::uint32_t rts_threshold_bytes = 65535;
+  std::uint32_t queue_packets = 0;  // 0: ns-3's default
+  double queue_max_delay_s = 0.0;   // 0: ns-3's default
+  // Flooding.
+  sv::FloodingConfig flooding;
+};
+
+// Frames put on the air, by kind (PHY TX begin events).
+struct MacCounters {
+  std::uint64_t tx_frames = 0;
+  std::uint64_t data_frames = 0;
+  std::uint64_t ack_frames = 0;
+  std::uint64_t other_frames = 0;
+  std::uint64_t retries = 0;  // data frames with the Retry bit set
+  std::uint64_t rx_errors = 0;  // frames detected but not decoded (SINR too low: collisions)
+  std::uint64_t tx_drops = 0;   // frames the MAC gave up (retry limit, queue)
+  std::map<std::string, std::uint64_t> rx_drops;  // PhyRxDrop events by reason
+};
+
+struct RoutingCounters {
+  std::uint64_t rreq = 0;
+  std::uint64_t rrep = 0;
+  std::uint64_t hello = 0;
+  std::uint64_t rerr = 0;
+  std::uint64_t rrep_ack = 0;
+  std::uint64_t control_bytes = 0;
+  std::uint64_t data_forwards = 0;
+};
+
+MacCounters g_mac;
+RoutingCounters g_routing;
+constexpr std::uint16_t kAodvPort = 654;
+constexpr const char* kSubnetMask = "255.255.0.0";
+
+void on_phy_tx_begin(ns3::Ptr<const ns3::Packet> packet, double /*power_w*/) {
+  ++g_mac.tx_frames;
+  ns3::WifiMacHeader header;
+  if (packet->PeekHeader(header) == 0) {
+    ++g_mac.other_frames;
+  } else if (header.IsData()) {
+    ++g_mac.data_frames;
+    if (header.IsRetry()) ++g_mac.retries;
+  } else if (header.IsAck()) {
+    ++g_mac.ack_frames;
+  } else {
+    ++g_mac.other_frames;
+  }
+}
+
+void on_phy_rx_drop(ns3::Ptr<const ns3::Packet> /*packet*/, ns3::WifiPhyRxfailureReason reason) {
+  std::ostringstream name;
+  name << reason;
+  ++g_mac.rx_drops[name.str()];
+}
+
+void on_phy_rx_error(ns3::Ptr<const ns3::Packet> /*packet*/, double /*snr*/) { ++g_mac.rx_errors; }
+
+void on_mac_tx_drop(ns3::Ptr<const ns3::Packet> /*packet*/) { ++g_mac.tx_drops; }
+
+// Every IP packet sent on a wireless interface: AODV control packets are counted by type.
+void on_ip_tx(ns3::Ptr<const ns3::Packet> packet, ns3::Ptr<ns3::Ipv4> /*ipv4*/,
+              std::uint32_t interface) {
+  if (interface == 0) return;  // loopback
+  ns3::Ptr<ns3::Packet> copy = packet->Copy();
+  ns3::Ipv4Header ip;
+  copy->RemoveHeader(ip);
+  if (ip.GetProtocol() != ns3::UdpL4Protocol::PROT_NUMBER) return;
+  ns3::UdpHeader udp;
+  copy->RemoveHeader(udp);
+  if (udp.GetDestinationPort() != kAodvPort) return;
+  ns3::aodv::TypeHeader type;
+  copy->RemoveHeader(type);
+  if (!type.IsValid()) return;
+  g_routing.control_bytes += packet->GetSize();
+  switch (type.Get()) {
+    case ns3::aodv::AODVTYPE_RREQ: ++g_routing.rreq; break;
+    case ns3::aodv::AODVTYPE_RREP: {
+      ns3::aodv::RrepHeader rrep;
+      copy->RemoveHeader(rrep);
+      // ns-3 sends HELLO as an RREP for itself, hop count 0, to the broadcast address; an RREP
+      // answering an RREQ goes to a next hop.
+      const ns3::Ipv4Address to = ip.GetDestination();
+      const bool broadcast =
+          to.IsBroadcast() || to.IsSubnetDirectedBroadcast(ns3::Ipv4Mask(kSubnetMask));
+      if (broadcast && rrep.GetDst() == ip.GetSource() && rrep.GetHopCount() == 0) {
+        ++g_routing.hello;
+      } else {
+        ++g_routing.rrep;
+      }
+      break;
+    }
+    case ns3::aodv::AODVTYPE_RERR: ++g_routing.rerr; break;
+    case ns3::aodv::AODVTYPE_RREP_ACK: ++g_routing.rrep_ack; break;
+  }
+}
+
+void on_unicast_forward(const ns3::Ipv4Header& /*header*/, ns3::Ptr<const ns3::Packet> /*p*/,
+                        std::uint32_t /*interface*/) {
+  ++g_routing.data_forwards;
+}
+
+double process_cpu_seconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) * 1e-6;
+}
+
+// Nodes in an ns-2 mobility trace: one more than the largest $node_(i).
+std::uint32_t count_nodes(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot open the mobility trace");
+  std::string line;
+  std::int64_t largest = -1;
+  const std::string marker = "$node_(";
+  while (std::getline(in, line)) {
+    const std::size_t at = line.find(marker);
+    if (at == std::string::npos) continue;
+    largest = std::max<std::int64_t>(largest, std::stoll(line.substr(at + marker.size())));
+  }
+  if (largest < 0) throw std::runtime_error(path + ": no node in the mobility trace");
+  return static_cast<std::uint32_t>(largest + 1);
+}
+
+double summary_duration_s(const std::string& run_dir) {
+  std::ifstream in(run_dir + "/summary.json");
+  if (!in) {
+    throw std::runtime_error(run_dir +
+                             "/summary.json: cannot open it; give --duration-s instead");
+  }
+  const nlohmann::json summary = nlohmann::json::parse(in);
+  return summary.at("sim_time_s").get<double>();
+}
+
+ns3::NetDeviceContainer install_wifi(const Options& options, const ns3::NodeContainer& nodes) {
+  ns3::YansWifiChannelHelper channel;
+  channel.SetPropagationDelay("ns3::ConstantSpeedPropagationDelayModel");
+  channel.AddPropagationLoss("ns3::LogDistancePropagationLossModel", "Exponent",
+                             ns3::DoubleValue(options.exponent), "ReferenceDistance",
+                             ns3::DoubleValue(options.reference_distance_m), "ReferenceLoss",
+                             ns3::DoubleValue(options.reference_loss_db));
+
+  ns3::YansWifiPhyHelper phy;
+  phy.SetChannel(channel.Create());
+  phy.Set("TxPowerStart", ns3::DoubleValue(options.tx_power_dbm));
+  phy.Set("TxPowerEnd", ns3::DoubleValue(options.tx_power_dbm));
+  phy.Set("RxSensitivity", ns3::DoubleValue(options.rx_sensitivity_dbm));
+  phy.Set("CcaEdThreshold", ns3::DoubleValue(options.cca_ed_threshold_dbm));
+  phy.Set("RxNoiseFigure", ns3::DoubleValue(options.noise_figure_db));
+  phy.SetPreambleDetectionModel("ns3::ThresholdPreambleDetectionModel", "MinimumRssi",
+                                ns3::DoubleValue(options.preamble_min_rssi_dbm), "Threshold",
+                                ns3::DoubleValue(options.preamble_threshold_db));
+  if (options.error_model == "nist") {
+    phy.SetErrorRateModel("ns3::NistErrorRateModel");
+  } else if (options.error_model == "yans") {
+    phy.SetErrorRateModel("ns3::YansErrorRateModel");
+  } else {
+    phy.SetErrorRateModel("ns3::TableBasedErrorRateModel");
+  }
+
+  ns3::WifiHelper wifi;
+  wifi.SetStandard(ns3::WIFI_STANDARD_80211a);
+  wifi.SetRemoteStationManager("ns3::ConstantRateWifiManager", "DataMode",
+                               ns3::StringValue("OfdmRate6Mbps"), "ControlMode",
+                               ns3::StringValue("OfdmRate6Mbps"), "RtsCtsThreshold",
+                               ns3::UintegerValue(options.rts_threshold_bytes));
+  ns3::WifiMacHelper mac;
+  mac.SetType("ns3::AdhocWifiMac");
+  return wifi.Install(phy, mac, nodes);
+}
+
+nlohmann::ordered_json run(const Options& options) {
+  const std::string mobility_path = options.run_dir + "/mobility.ns2";
+  const std::string traffic_path = options.run_dir + "/traffic.csv";
+  const double duration_s =
+      options.duration_s > 0.0 ? options.duration_s : summary_duration_s(options.run_dir);
+  const std::uint32_t node_count = count_nodes(mobility_path);
+  const std::vector<sv::TrafficMessage> messages = sv::read_traffic_csv(traffic_path);
+  for (const sv::TrafficMessage& message : messages) {
+    if (message.payload_bytes < sv::kMessageIndexBytes) {
+      throw std::runtime_error(traffic_path + ": message " + std::to_string(message.message_id) +
+                               " has fewer than 4 payload bytes; the replay needs 4");
+    }
+    if (message.source >= node_count ||
+        (!message.broadcast() && message.destination >= node_count)) {
+      throw std::runtime_error(traffic_path + ": message " + std::to_string(message.message_id) +
+                               " names a robot that the mobility trace does not have");
+    }
+  }
+
+  ns3::RngSeedManager::SetSeed(1);
+  ns3::RngSeedManager::SetRun(options.seed);
+  if (options.queue_packets > 0) {
+    ns3::Config::SetDefault("ns3::WifiMacQueue::MaxSize",
+                            ns3::QueueSizeValue(ns3::QueueSize(
+                                ns3::QueueSizeUnit::PACKETS, options.queue_packets)));
+  }
+  if (options.queue_max_delay_s > 0.0) {
+    ns3::Config::SetDefault("ns3::WifiMacQueue::MaxDelay",
+                            ns3::TimeValue(ns3::Seconds(options.queue_max_delay_s)));
+  }
+
+  ns3::NodeContainer nodes;
+  nodes.Create(node_count);
+  const ns3::NetDeviceContainer devices = install_wifi(options, nodes);
+  ns3::Ns2MobilityHelper(mobility_path).Install();
+
+  ns3::InternetStackHelper internet;
+  ns3::AodvHelper aodv;
+  if (options.routing == "aodv") internet.SetRoutingHelper(aodv);
+  internet.Install(nodes);
+  ns3::Ipv4AddressHelper addresses;
+  addresses.SetBase("10.1.0.0", kSubnetMask);
+  const ns3::Ipv4InterfaceContainer interfaces = addresses.Assign(devices);
+  // No ARP exchange: SwarmNet has none, and ns-3's ARP would add frames and drop packets queued
+  // behind a pending resolution.
+  ns3::NeighborCacheHelper().PopulateNeighborCache();
+
+  std::int64_t stream = 1000;
+  stream += ns3::WifiHelper().AssignStreams(devices, stream);
+  if (options.routing == "aodv") stream += aodv.AssignStreams(nodes, stream);
+
+  sv::ReplayMetrics metrics(messages);
+  sv::ReplayWorld world{messages, metrics, {}, 9};
+  for (std::uint32_t i = 0; i < node_count; ++i) world.addresses.push_back(interfaces.GetAddress(i));
+  sv::FloodingCounters flooding_counters;
+  std::vector<std::unique_ptr<sv::ReplayEndpoint>> endpoints;
+  for (std::uint32_t i = 0; i < node_count; ++i) {
+    if (options.routing == "flooding") {
+      auto jitter = ns3::CreateObject<ns3::UniformRandomVariable>();
+      jitter->SetStream(stream++);
+      endpoints.push_back(std::make_unique<sv::FloodingEndpoint>(
+          nodes.Get(i), i, world, options.flooding, flooding_counters, jitter));
+    } else {
+      endpoints.push_back(std::make_unique<sv::DatagramEndpoint>(nodes.Get(i), i, world));
+    }
+  }
+  for (std::uint32_t index = 0; index < messages.size(); ++index) {
+    const sv::TrafficMessage& message = messages[index];
+    sv::ReplayEndpoint* endpoint = endpoints[message.source].get();
+    ns3::Simulator::ScheduleWithContext(message.source, ns3::NanoSeconds(message.inject_ns),
+                                        [endpoint, index]() { endpoint->send(index); });
+  }
+
+  ns3::Config::ConnectWithoutContext(
+      "/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Phy/PhyTxBegin",
+      ns3::MakeCallback(&on_phy_tx_begin));
+  ns3::Config::ConnectWithoutContext(
+      "/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Phy/PhyRxDrop",
+      ns3::MakeCallback(&on_phy_rx_drop));
+  ns3::Config::ConnectWithoutContext(
+      "/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Phy/State/RxError",
+      ns3::MakeCallback(&on_phy_rx_error));
+  ns3::Config::ConnectWithoutContext(
+      "/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Mac/MacTxDrop",
+      ns3::MakeCallback(&on_mac_tx_drop));
+  ns3::Config::ConnectWithoutContext("/NodeList/*/$ns3::Ipv4L3Protocol/Tx",
+                                     ns3::MakeCallback(&on_ip_tx));
+  ns3::Config::ConnectWithoutContext("/NodeList/*/$ns3::Ipv4L3Protocol/UnicastForward",
+                                     ns3::MakeCallback(&on_unicast_forward));
+
+  ns3::Simulator::Stop(ns3::Seconds(duration_s));
+  const auto wall_start = std::chrono::steady_clock::now();
+  const double cpu_start = process_cpu_seconds();
+  ns3::Simulator::Run();
+  const double cpu_s = process_cpu_seconds() - cpu_start;
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  ns3::Simulator::Destroy();
+
+  using Json = nlohmann::ordered_json;
+  Json out;
+  out["simulator"] = "ns-3.37";
+  out["run_dir"] = options.run_dir;
+  out["routing_plugin"] = options.routing;
+  out["seed"] = options.seed;
+  out["robots"] = node_count;
+  out["sim_time_s"] = duration_s;
+  const Json measures = metrics.report();
+  for (const auto& [key, value] : measures.items()) out[key] = value;
+  out["mac"] = {{"tx_frames", g_mac.tx_frames},       {"data_frames", g_mac.data_frames},
+                {"ack_frames", g_mac.ack_frames},     {"other_frames", g_mac.other_frames},
+                {"retries", g_mac.retries},           {"rx_errors", g_mac.rx_errors},
+                {"tx_drops", g_mac.tx_drops},         {"rx_drops", g_mac.rx_drops}};
+  if (options.routing == "aodv") {
+    const std::uint64_t control =
+        g_routing.rreq + g_routing.rrep + g_routing.hello + g_routing.rerr + g_routing.rrep_ack;
+    out["routing"] = {{"control_packets", control}, {"control_bytes", g_routing.control_bytes},
+                      {"rreq", g_routing.rreq},     {"rrep", g_routing.rrep},
+                      {"hello", g_routing.hello},   {"rerr", g_routing.rerr},
+                      {"rrep_ack", g_routing.rrep_ack},
+                      {"data_forwards", g_routing.data_forwards}};
+  } else if (options.routing == "flooding") {
+    out["routing"] = {{"control_packets", 0},
+                      {"data_forwards", flooding_counters.forwards},
+                      {"duplicates", flooding_counters.duplicates},
+                      {"ttl_expired", flooding_counters.ttl_expired}};
+  } else {
+    out["routing"] = {{"control_packets", 0}, {"data_forwards", 0}};
+  }
+  out["cpu_s"] = {{"network", cpu_s}};
+  out["wall_s"] = wall_s;
+  out["parameters"] = {{"standard", "802.11a"},
+                       {"rate", "OfdmRate6Mbps (data and control)"},
+                       {"exponent", options.exponent},
+                       {"reference_loss_db", options.reference_loss_db},
+                       {"reference_distance_m", options.reference_distance_m},
+                       {"tx_power_dbm", options.tx_power_dbm},
+                       {"rx_sensitivity_dbm", options.rx_sensitivity_dbm},
+                       {"cca_ed_threshold_dbm", options.cca_ed_threshold_dbm},
+                       {"preamble_min_rssi_dbm", options.preamble_min_rssi_dbm},
+                       {"preamble_threshold_db", options.preamble_threshold_db},
+                       {"noise_figure_db", options.noise_figure_db},
+                       {"error_model", options.error_model},
+                       {"rts_threshold_bytes", options.rts_threshold_bytes},
+                       {"flooding_ttl", options.flooding.ttl},
+                       {"flooding_jitter_max_s", options.flooding.jitter_max_s},
+                       {"flooding_cache_size", options.flooding.cache_size}};
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  CLI::App app{"Replays a SwarmNet run's mobility trace and traffic schedule in ns-3.37 "
+               "(802.11a at 6 Mbps, log-distance propagation) and writes its measures as JSON"};
+  app.add_option("run_dir", options.run_dir,
+                 "SwarmNet run directory: mobility.ns2, traffic.csv (and summary.json)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  app.add_option("-o,--output", options.output, "JSON result file (default: standard output)");
+  app.add_option("--routing", options.routing, "routing protocol")
+      ->check(CLI::IsMember({"direct", "flooding", "aodv"}))
+      ->capture_default_str();
+  app.add_option("--duration-s", options.duration_s,
+                 "simulated seconds (default: summary.json's sim_time_s)");
+  app.add_option("--seed", options.seed, "ns-3 run number (RngRun)")->capture_default_str();
+  app.add_option("--exponent", options.exponent, "log-distance path-loss exponent")
+      ->capture_default_str();
+  app.add_option("--reference-loss-db", options.reference_loss_db, "loss at the reference distance")
+      ->capture_default_str();
+  app.add_option("--reference-distance-m", options.reference_distance_m, "reference distance")
+      ->capture_default_str();
+  app.add_option("--tx-power-dbm", options.tx_power_dbm, "transmit power")->capture_default_str();
+  app.add_option("--rx-sensitivity-dbm", options.rx_sensitivity_dbm, "YansWifiPhy RxSensitivity")
+      ->capture_default_str();
+  app.add_option("--cca-ed-threshold-dbm", options.cca_ed_threshold_dbm,
+                 "YansWifiPhy CcaEdThreshold")
+      ->capture_default_str();
+  app.add_option("--preamble-min-rssi-dbm", options.preamble_min_rssi_dbm,
+                 "ThresholdPreambleDetectionModel MinimumRssi: weaker frames are not detected")
+      ->capture_default_str();
+  app.add_option("--preamble-threshold-db", options.preamble_threshold_db,
+                 "ThresholdPreambleDetectionModel Threshold (SNR)")
+      ->capture_default_str();
+  app.add_option("--noise-figure-db", options.noise_figure_db, "YansWifiPhy RxNoiseFigure")
+      ->capture_default_str();
+  app.add_option("--error-model", options.error_model, "frame error-rate model")
+      ->check(CLI::IsMember({"table", "nist", "yans"}))
+      ->capture_default_str();
+  app.add_option("--rts-threshold-bytes", options.rts_threshold_bytes,
+                 "RTS/CTS above this MPDU size")
+      ->capture_default_str();
+  app.add_option("--queue-packets", options.queue_packets,
+                 "WifiMacQueue MaxSize in packets (0: ns-3's default, 500)");
+  app.add_option("--queue-max-delay-s", options.queue_max_delay_s,
+                 "WifiMacQueue MaxDelay (0: ns-3's default, 0.5 s)");
+  app.add_option("--flooding-ttl", options.flooding.ttl, "flooding: hops a packet may travel")
+      ->check(CLI::Range(1, 255))
+      ->capture_default_str();
+  app.add_option("--flooding-jitter-max-s", options.flooding.jitter_max_s,
+                 "flooding: largest random delay before a rebroadcast")
+      ->capture_default_str();
+  app.add_option("--flooding-cache-size", options.flooding.cache_size,
+                 "flooding: (originator, sequence) pairs remembered")
+      ->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    const nlohmann::ordered_json result = run(options);
+    if (options.output.empty()) {
+      std::cout << result.dump(2) << '\n';
+    } else {
+      const std::string temporary = options.output + ".tmp";
+      {
+        std::ofstream out(temporary);
+        out << result.dump(2) << '\n';
+        if (!out) throw std::runtime_error(temporary + ": cannot write");
+      }
+      if (std::rename(temporary.c_str(), options.output.c_str()) != 0) {
+        throw std::runtime_error(options.output + ": cannot rename the result into place");
+      }
+    }
+  } catch (const std::exception& error) {
+    std::cerr << "swarmnet_ns3_replay: " << error.what() << '\n';
+    return 1;
+  }
+  return 0;
+}

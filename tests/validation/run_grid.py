@@ -1,0 +1,172 @@
+#!/usr/bin/env python3
+"""The validation grid: SwarmNet and ns-3.37 side by side on densities from sparse to dense and
+loads from light to saturated, one row at a time (never two simulators at once), with the CPU
+time of both network halves measured on every row.
+
+    python3 tests/validation/run_grid.py --build build [--full] [--duration-s 20]
+        [--routing flooding,direct,aodv] [--out build/validation-grid] [--doc docs/validation.md]
+
+Writes OUT/results.json and OUT/table.md, and with --doc replaces the table between the
+'<!-- validation-grid:begin -->' and '<!-- validation-grid:end -->' lines of the doc. Exits 1 if
+a row misses a target (delivery ratio within 3 points, mean delay within 15%, SwarmNet at least
+10x faster on rows of 100 nodes or more; AODV control packets per delivered packet within 20%).
+"""
+import argparse
+import itertools
+import json
+import os
+import platform
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import compare  # noqa: E402
+import validation_runner as vr  # noqa: E402
+
+STUDY_DENSITY = 200.0  # robots per km^2: 50 robots in 500 x 500 m
+DENSE_DENSITY = 800.0  # four times denser: 50 robots in 250 x 250 m
+DENSITIES = {"study": STUDY_DENSITY, "dense": DENSE_DENSITY}
+RATES_HZ = (1.0, 5.0, 20.0)
+SIZES = (50, 100, 200)
+
+# The default grid: every density x load corner for flooding, the one-hop baseline, AODV.
+DEFAULT_ROWS = {
+    "flooding": [(50, "study", 1), (50, "study", 5), (50, "study", 20), (100, "study", 5),
+                 (200, "study", 1), (200, "study", 5), (50, "dense", 5), (100, "dense", 1),
+                 (100, "dense", 20)],
+    "direct": [(50, "study", 5), (100, "study", 20), (200, "study", 5), (200, "dense", 20)],
+    "aodv": [(50, "study", 5), (100, "study", 5), (200, "study", 5), (100, "dense", 5)],
+}
+
+HEADER = "| routing | N | arena (m) | msg/s per sender " + compare.HEADER[len("| N | routing "):]
+COLUMNS = HEADER.count(" |")
+BEGIN = "<!-- validation-grid:begin -->"
+END = "<!-- validation-grid:end -->"
+
+
+def plugin_available(build, name):
+    return os.path.exists(os.path.join(build, "plugins", f"swarmnet_{name}.so"))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--build", default="build", help="SwarmNet build directory")
+    parser.add_argument("--out", help="results directory (default BUILD/validation-grid)")
+    parser.add_argument("--doc", help="Markdown file whose grid table to replace")
+    parser.add_argument("--full", action="store_true",
+                        help="every N x density x rate for each routing (slow: hours of ns-3)")
+    parser.add_argument("--routing", default="flooding,direct,aodv",
+                        help="comma-separated protocols (aodv is skipped if SwarmNet lacks it)")
+    parser.add_argument("--duration-s", type=float, default=20.0, help="simulated seconds per row")
+    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--max-robots", type=int, default=100000, help="skip larger rows")
+    parser.add_argument("--stack", choices=["auto", "80211", "disk"], default="auto")
+    parser.add_argument("--from-results", metavar="RESULTS_JSON",
+                        help="run nothing: rewrite the table (and --doc) from an earlier run")
+    args = parser.parse_args()
+    if args.from_results:
+        with open(args.from_results, encoding="utf-8") as f:
+            earlier = json.load(f)
+        table = markdown_table(earlier["rows"], earlier["meta"])
+        print(table)
+        if args.doc:
+            replace_table(args.doc, table)
+        return 0
+
+    build = os.path.abspath(args.build)
+    swarmnet = os.path.join(build, "bin", "swarmnet")
+    ns3 = os.path.join(build, "bin", "swarmnet_ns3_replay")
+    for program in (swarmnet, ns3):
+        if not os.path.exists(program):
+            sys.exit(f"run_grid.py: {program} not found: build the targets swarmnet, "
+                     f"swarmnet_plugins and swarmnet_ns3_replay (ns-3 must be installed)")
+    out = os.path.abspath(args.out or os.path.join(build, "validation-grid"))
+    scenario = os.path.join(vr.SOURCE_DIR, "configs", "validation", "grid.yaml")
+    stack, reason = args.stack, ""
+    if stack == "auto":
+        stack, reason = vr.detect_stack(swarmnet, scenario)
+    if stack == "disk":
+        print("SwarmNet's 802.11 stack is not available; the SwarmNet side runs the 120 m unit "
+              "disk with the ideal MAC" + (":\n  " + reason.replace("\n", "\n  ") if reason else ""))
+
+    rows_wanted = []
+    for routing in args.routing.split(","):
+        if routing == "aodv" and not plugin_available(build, "aodv"):
+            print("skipping aodv: SwarmNet's aodv plugin is not built")
+            continue
+        if args.full:
+            cases = itertools.product(SIZES, DENSITIES, RATES_HZ)
+        else:
+            cases = DEFAULT_ROWS[routing]
+        rows_wanted += [(routing, n, d, r) for n, d, r in cases if n <= args.max_robots]
+
+    results = []
+    for i, (routing, robots, density, rate) in enumerate(rows_wanted, 1):
+        side = vr.arena_side_m(robots, DENSITIES[density])
+        name = f"{routing}-n{robots}-{density}-r{rate:g}"
+        print(f"[{i}/{len(rows_wanted)}] {name}: {robots} robots in {side} x {side} m, "
+              f"{rate:g} msg/s per sender", flush=True)
+        overrides = [f"robots.count={robots}", f"arena.width_m={side}", f"arena.height_m={side}",
+                     f"robots.controllers.1.params.rate_hz={rate:g}",
+                     f"duration_s={args.duration_s:g}"]
+        tolerances = {"pdr_points": 3.0, "delay_pct": 15.0,
+                      "min_speedup": 10.0 if robots >= 100 else None,
+                      "control_pct": 20.0 if routing == "aodv" else None}
+        started = time.monotonic()
+        try:
+            row = vr.run_case(swarmnet, ns3, scenario, os.path.join(out, name), routing, stack,
+                              overrides, args.seed, tolerances, log=lambda s: None)
+        except RuntimeError as error:
+            print(f"  failed: {error}", flush=True)
+            row = {"robots": robots, "routing": routing, "error": str(error), "pass": False}
+        row.update({"name": name, "density": density, "arena_side_m": side, "rate_hz": rate,
+                    "wall_s": time.monotonic() - started})
+        if "error" not in row:
+            print("  " + compare.text_report(row).replace("\n", "\n  "), flush=True)
+        results.append(row)
+
+    os.makedirs(out, exist_ok=True)
+    meta = {"stack": stack, "duration_s": args.duration_s, "seed": args.seed,
+            "machine": platform.machine(), "cpus": os.cpu_count(),
+            "date": time.strftime("%Y-%m-%d")}
+    with open(os.path.join(out, "results.json"), "w", encoding="utf-8") as f:
+        json.dump({"meta": meta, "rows": results}, f, indent=2)
+    table = markdown_table(results, meta)
+    with open(os.path.join(out, "table.md"), "w", encoding="utf-8") as f:
+        f.write(table)
+    print(table)
+    if args.doc:
+        replace_table(args.doc, table)
+    return 0 if all(r["pass"] for r in results) else 1
+
+
+def markdown_table(results, meta):
+    stack = ("SwarmNet: log_distance + sinr PHY + dcf80211" if meta["stack"] == "80211" else
+             "SwarmNet: 120 m disk + ideal_mac (its 802.11 stack was not available)")
+    lines = [f"{stack}; ns-3.37: YansWifi 802.11a 6 Mbit/s, log-distance; "
+             f"{meta['duration_s']:g} simulated s per row, seed {meta['seed']}, "
+             f"{meta['cpus']} CPUs, {meta['date']}. CPU: network half only, seconds.", "",
+             HEADER, "|" + "---|" * COLUMNS]
+    for row in results:
+        lead = [row["routing"], str(row["robots"]), f"{row['arena_side_m']:g}", f"{row['rate_hz']:g}"]
+        if "error" in row:
+            lines.append("| " + " | ".join(lead + ["error: " + row["error"].splitlines()[0]]
+                                           + [""] * (COLUMNS - 5)) + " |")
+        else:
+            lines.append("| " + " | ".join(lead + compare.markdown_cells(row)) + " |")
+    return "\n".join(lines) + "\n"
+
+
+def replace_table(doc, table):
+    with open(doc, encoding="utf-8") as f:
+        text = f.read()
+    if BEGIN not in text or END not in text:
+        sys.exit(f"run_grid.py: {doc} has no '{BEGIN}' ... '{END}' block")
+    head, rest = text.split(BEGIN, 1)
+    _, tail = rest.split(END, 1)
+    with open(doc, "w", encoding="utf-8") as f:
+        f.write(head + BEGIN + "\n" + table + END + tail)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,103 @@
+"""Runs one validation case: a SwarmNet scenario, then ns-3 on its mobility trace and traffic
+schedule (swarmnet_ns3_replay), then compare.py's comparison. Shared by run_small_case.py and
+run_grid.py; Python standard library only."""
+import json
+import math
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import compare  # noqa: E402
+
+SOURCE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+# The radio both simulators model (configs/validation/*.yaml): log-distance path loss, exponent 3,
+# 46.6777 dB at 1 m, 27.0531 dBm transmit power, so that the received power at 120 m is -82 dBm,
+# the preamble-detection (CCA) threshold; 802.11a at 6 Mbit/s for data and control frames.
+NOMINAL_RANGE_M = 120.0
+NS3_RADIO = ["--exponent", "3", "--reference-loss-db", "46.6777", "--reference-distance-m", "1",
+             "--tx-power-dbm", "27.0531", "--preamble-min-rssi-dbm", "-82",
+             "--preamble-threshold-db", "4", "--cca-ed-threshold-dbm", "-62",
+             "--noise-figure-db", "7", "--error-model", "nist"]
+
+FLOODING = {"ttl": 32, "jitter_max_s": 0.005}
+
+# Until SwarmNet's 802.11 stack (log_distance, sinr PHY, dcf80211) builds, the SwarmNet side runs
+# a 120 m unit disk with the ideal MAC at 6 Mbit/s: same connectivity, no contention.
+DISK_NETWORK = {
+    "propagation": [{"plugin": "disk", "params": {"range_m": NOMINAL_RANGE_M,
+                                                  "probability": 1.0}}],
+    "mac": {"plugin": "ideal_mac", "params": {"bitrate_bps": 6.0e6}},
+}
+
+
+def routing_choice(routing):
+    if routing == "flooding":
+        return {"plugin": "flooding", "params": dict(FLOODING)}
+    return {"plugin": routing}
+
+
+def detect_stack(swarmnet, scenario):
+    """'80211' if the scenario (which names the 802.11 stack) validates, else 'disk'."""
+    result = subprocess.run([swarmnet, "validate", scenario], capture_output=True, text=True,
+                            check=False)
+    if result.returncode == 0:
+        return "80211", ""
+    return "disk", (result.stderr or result.stdout).strip()
+
+
+def swarmnet_overrides(stack, routing):
+    """--set arguments that select the stack and the routing protocol (JSON is YAML flow)."""
+    if stack == "disk":
+        network = dict(DISK_NETWORK)
+        network["routing"] = routing_choice(routing)
+        return ["--set", "network=" + json.dumps(network)]
+    return ["--set", "network.routing=" + json.dumps(routing_choice(routing))]
+
+
+def run_case(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), seed=1,
+             tolerances=None, log=print):
+    """Runs both simulators and compares them; returns compare.compare()'s row."""
+    tolerances = tolerances or {}
+    run_dir = os.path.join(work_dir, "swarmnet")
+    ns3_json = os.path.join(work_dir, "ns3.json")
+    os.makedirs(work_dir, exist_ok=True)
+    command = [swarmnet, "run", scenario, "--seed", str(seed), "--out", run_dir]
+    command += swarmnet_overrides(stack, routing)
+    for override in overrides:
+        command += ["--set", override]
+    _run(command, os.path.join(work_dir, "swarmnet.out"), log)
+    command = [ns3, run_dir, "--routing", routing, "--seed", str(seed), "-o", ns3_json]
+    command += NS3_RADIO
+    if routing == "flooding":
+        command += ["--flooding-ttl", str(FLOODING["ttl"]),
+                    "--flooding-jitter-max-s", str(FLOODING["jitter_max_s"])]
+    _run(command, os.path.join(work_dir, "ns3.out"), log)
+    with open(os.path.join(run_dir, "summary.json"), encoding="utf-8") as f:
+        summary = json.load(f)
+    with open(ns3_json, encoding="utf-8") as f:
+        replay = json.load(f)
+    row = compare.compare(summary, replay, **tolerances)
+    row["routing"] = routing
+    row["stack"] = stack
+    return row
+
+
+def _run(command, output_path, log):
+    log("  $ " + " ".join(_quote(c) for c in command))
+    with open(output_path, "w", encoding="utf-8") as out:
+        result = subprocess.run(command, stdout=out, stderr=subprocess.STDOUT, check=False)
+    if result.returncode != 0:
+        with open(output_path, encoding="utf-8") as f:
+            tail = f.read()[-2000:]
+        raise RuntimeError(f"{os.path.basename(command[0])} exited with {result.returncode}:\n"
+                           f"{tail}")
+
+
+def _quote(text):
+    return text if all(c.isalnum() or c in "-_./=:," for c in text) else "'" + text + "'"
+
+
+def arena_side_m(robots, robots_per_km2):
+    return round(1000.0 * math.sqrt(robots / robots_per_km2), 1)
