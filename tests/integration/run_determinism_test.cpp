@@ -20,7 +20,7 @@ const std::string kSmall =
 // describe the simulation.
 std::string summary_without_timing(const std::filesystem::path& dir) {
   auto summary = nlohmann::ordered_json::parse(read_file(dir / "summary.json"));
-  for (const char* key : {"wall_s", "cpu_s", "realtime_factor", "transport"}) {
+  for (const char* key : {"wall_s", "cpu_s", "realtime_factor", "transport_share", "transport"}) {
     EXPECT_TRUE(summary.contains(key)) << key;
     summary.erase(key);
   }

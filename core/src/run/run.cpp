@@ -274,6 +274,8 @@ RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
                   {"transport", transport_cpu},
                   {"total", robot_cpu + network_cpu + transport_cpu}};
     s["realtime_factor"] = wall_s > 0 ? sim_s / wall_s : 0.0;
+    // CPU both halves spent encoding, moving and waiting on records, as a share of the run.
+    s["transport_share"] = wall_s > 0 ? transport_cpu / wall_s : 0.0;
     for (const char* key : {"packets", "pdr", "delay_s", "hops_mean", "mac", "routing", "events"}) {
       if (report.contains(key)) s[key] = report[key];
     }
