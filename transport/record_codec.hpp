@@ -23,9 +23,8 @@ class RecordWriter {
   template <typename T>
   RecordWriter& put(T value) {
     static_assert(std::is_trivially_copyable_v<T>);
-    const auto at = buffer_.size();
-    buffer_.resize(at + sizeof(T));
-    std::memcpy(buffer_.data() + at, &value, sizeof(T));
+    const auto* bytes = reinterpret_cast<const std::byte*>(&value);
+    buffer_.insert(buffer_.end(), bytes, bytes + sizeof(T));
     return *this;
   }
   RecordWriter& put_bytes(std::span<const std::byte> bytes) {

@@ -94,6 +94,8 @@ IoStatus SpscRing::try_write(std::span<const std::byte> record) {
   copy_in(write_head_, reinterpret_cast<const std::byte*>(&length), kLengthBytes);
   copy_in(write_head_ + kLengthBytes, record.data(), record.size());
   write_head_ += need;
+  // A large batch is shown in slices, so the consumer decodes while the producer still writes.
+  if (write_head_ - header_->head.load(std::memory_order_relaxed) >= kPublishSliceBytes) publish();
   return IoStatus::ok;
 }
 
@@ -125,8 +127,11 @@ IoStatus SpscRing::try_pop(std::vector<std::byte>& record) {
   copy_out(tail, reinterpret_cast<std::byte*>(&length), kLengthBytes);
   const std::uint64_t need = padded(kLengthBytes + length);
   if (length > max_record_bytes() || need > available) return IoStatus::corrupt;
-  record.resize(length);
-  copy_out(tail + kLengthBytes, record.data(), length);
+  // assign/insert copy straight in: resize() would zero-fill the buffer first.
+  const std::uint64_t offset = (tail + kLengthBytes) & mask_;
+  const std::size_t first = std::min<std::uint64_t>(length, header_->capacity - offset);
+  record.assign(storage_ + offset, storage_ + offset + first);
+  record.insert(record.end(), storage_, storage_ + (length - first));
   header_->tail.store(tail + need, std::memory_order_seq_cst);
   wake_producer();
   return IoStatus::ok;
@@ -154,9 +159,13 @@ template <typename Attempt>
 IoStatus wait_for(Attempt&& attempt, std::atomic<std::uint32_t>& event,
                   std::atomic<std::uint32_t>& sleeping, const WaitPolicy& policy) {
   IoStatus status = attempt();
-  for (std::uint32_t i = 0; status == IoStatus::would_block && i < policy.spin_iterations; ++i) {
+  if (status != IoStatus::would_block) return status;
+  // The clock bounds how long we spin and wait; it never reaches a result.
+  const auto spin_until = std::chrono::steady_clock::now() + policy.spin_time;
+  for (std::uint32_t i = 1; status == IoStatus::would_block; ++i) {
     cpu_relax();
     status = attempt();
+    if (i % 32 == 0 && std::chrono::steady_clock::now() >= spin_until) break;
   }
   // On a machine with fewer free cores than runnable threads, spinning only delays the peer we
   // wait for: give the core away a few times before sleeping.
@@ -165,7 +174,6 @@ IoStatus wait_for(Attempt&& attempt, std::atomic<std::uint32_t>& event,
     status = attempt();
   }
   if (status != IoStatus::would_block) return status;
-  // The clock bounds how long we wait; it never reaches a result.
   const auto deadline = std::chrono::steady_clock::now() + policy.timeout;
   for (;;) {
     const std::uint32_t seen = event.load(std::memory_order_acquire);

@@ -72,7 +72,8 @@ class SpscRing {
 
   // Producer side. write() stages a record without showing it to the consumer; publish() shows
   // every staged record at once, so a batch costs one shared-index store and at most one wake-up
-  // instead of one per record. push() is write() then publish().
+  // instead of one per record (a batch larger than 16 KiB is shown in 16 KiB slices, so that the
+  // consumer can start on it). push() is write() then publish().
   IoStatus try_write(std::span<const std::byte> record);
   IoStatus write(std::span<const std::byte> record, const WaitPolicy& policy);
   void publish();
@@ -88,6 +89,7 @@ class SpscRing {
  private:
   static constexpr std::size_t kLengthBytes = 4;
   static constexpr std::uint64_t kAlign = 8;
+  static constexpr std::uint64_t kPublishSliceBytes = 16 * 1024;
   static std::uint64_t padded(std::uint64_t bytes) { return (bytes + kAlign - 1) & ~(kAlign - 1); }
 
   void copy_in(std::uint64_t position, const std::byte* source, std::size_t bytes);

@@ -279,13 +279,16 @@ ProtocolResult StepChannel::send_result(const StepResult& result) {
 }
 
 ProtocolResult StepChannel::receive_result(StepResult& result) {
-  result.deliveries.clear();
+  // Deliveries are decoded into the elements of earlier steps, reusing their payload buffers:
+  // no allocation per delivery once the largest step has been seen.
+  std::size_t count_so_far = 0;
   for (;;) {
     RecordType type{};
     RecordReader* reader = nullptr;
     if (auto r = receive(type, reader); !r.ok()) return r;
     if (type == RecordType::delivery) {
-      Delivery& d = result.deliveries.emplace_back();
+      if (count_so_far == result.deliveries.size()) result.deliveries.emplace_back();
+      Delivery& d = result.deliveries[count_so_far++];
       std::int64_t sent = 0;
       std::int64_t delivered = 0;
       if (!reader->get(d.message_id) || !reader->get(d.source) || !reader->get(d.destination) ||
@@ -299,6 +302,7 @@ ProtocolResult StepChannel::receive_result(StepResult& result) {
       continue;
     }
     if (type != RecordType::step_done) return unexpected(type, "delivery or step_done");
+    result.deliveries.resize(count_so_far);
     std::uint32_t count = 0;
     if (!reader->get(result.step) || !reader->get(result.events) || !reader->get(count) ||
         !reader->at_end()) {

@@ -10,7 +10,11 @@
 namespace swarmnet {
 
 struct WaitPolicy {
-  std::uint32_t spin_iterations = 256;  // polls before yielding; 0: none
+  // Polling before yielding, bounded by time rather than a count because a pause instruction
+  // lasts 10 to 140 cycles depending on the CPU. Long enough to cover the peer's work on a small
+  // step (a step exchange of hundreds of robots takes microseconds), short enough to be
+  // negligible against a step that takes milliseconds.
+  std::chrono::nanoseconds spin_time = std::chrono::microseconds(50);
   std::uint32_t yield_iterations = 8;   // sched_yield() calls before sleeping
   std::chrono::nanoseconds sleep_slice = std::chrono::milliseconds(20);  // re-check interval
   std::chrono::nanoseconds timeout = std::chrono::seconds(60);           // give up: the peer hangs
