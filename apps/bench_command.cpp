@@ -11,8 +11,6 @@
 #include <string>
 #include <vector>
 
-extern char** environ;
-
 namespace swarmnet {
 
 namespace {
@@ -66,6 +64,7 @@ int bench_transport_command(const std::filesystem::path& out, double min_time_s)
                                    "--benchmark_out_format=json",
                                    "--benchmark_min_time=" + std::to_string(min_time_s)};
   std::vector<char*> argv;
+  argv.reserve(args.size() + 1);
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = 0;

@@ -7,7 +7,7 @@
 namespace swarmnet {
 
 inline std::filesystem::path default_scenario_path() {
-  const std::filesystem::path in_source = SWARMNET_SOURCE_DIR "/configs/quickstart.yaml";
+  std::filesystem::path in_source = SWARMNET_SOURCE_DIR "/configs/quickstart.yaml";
   if (std::filesystem::exists(in_source)) return in_source;
   return SWARMNET_INSTALL_DATA_DIR "/configs/quickstart.yaml";
 }

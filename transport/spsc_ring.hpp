@@ -89,7 +89,7 @@ class SpscRing {
  private:
   static constexpr std::size_t kLengthBytes = 4;
   static constexpr std::uint64_t kAlign = 8;
-  static constexpr std::uint64_t kPublishSliceBytes = 16 * 1024;
+  static constexpr std::uint64_t kPublishSliceBytes = std::uint64_t{16} * 1024;
   static std::uint64_t padded(std::uint64_t bytes) { return (bytes + kAlign - 1) & ~(kAlign - 1); }
 
   void copy_in(std::uint64_t position, const std::byte* source, std::size_t bytes);

@@ -15,7 +15,7 @@ struct WaitPolicy {
   // step (a step exchange of hundreds of robots takes microseconds), short enough to be
   // negligible against a step that takes milliseconds.
   std::chrono::nanoseconds spin_time = std::chrono::microseconds(50);
-  std::uint32_t yield_iterations = 8;   // sched_yield() calls before sleeping
+  std::uint32_t yield_iterations = 8;  // sched_yield() calls before sleeping
   std::chrono::nanoseconds sleep_slice = std::chrono::milliseconds(20);  // re-check interval
   std::chrono::nanoseconds timeout = std::chrono::seconds(60);           // give up: the peer hangs
   // Called between sleep slices; returns false when the peer is known to be gone.

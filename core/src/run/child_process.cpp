@@ -11,8 +11,6 @@
 
 #include "run/run_error.hpp"
 
-extern char** environ;
-
 namespace swarmnet {
 
 ChildProcess::ChildProcess(const std::vector<std::string>& arguments) {
