@@ -69,6 +69,7 @@ bool SpscRing::attach(void* memory, std::size_t memory_bytes, SpscRing& ring, st
 }
 
 void SpscRing::copy_in(std::uint64_t position, const std::byte* source, std::size_t bytes) {
+  if (bytes == 0) return;  // an empty record's data() may be null, which memcpy must not get
   const std::uint64_t offset = position & mask_;
   const std::size_t first = std::min<std::uint64_t>(bytes, header_->capacity - offset);
   std::memcpy(storage_ + offset, source, first);
@@ -76,6 +77,7 @@ void SpscRing::copy_in(std::uint64_t position, const std::byte* source, std::siz
 }
 
 void SpscRing::copy_out(std::uint64_t position, std::byte* target, std::size_t bytes) const {
+  if (bytes == 0) return;
   const std::uint64_t offset = position & mask_;
   const std::size_t first = std::min<std::uint64_t>(bytes, header_->capacity - offset);
   std::memcpy(target, storage_ + offset, first);
