@@ -1,6 +1,9 @@
 // The flooding plugin's packet format and duplicate cache, tested as units.
 #include <gtest/gtest.h>
 
+#include <deque>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "duplicate_cache.hpp"
@@ -70,6 +73,38 @@ TEST(FloodingDuplicateCache, EvictsInInsertionOrder) {
   EXPECT_TRUE(cache.contains(0, 4));
   EXPECT_TRUE(cache.contains(0, 5));
   EXPECT_TRUE(cache.insert(0, 1));  // forgotten: new again
+}
+
+TEST(FloodingDuplicateCache, MatchesAReferenceFifoSet) {
+  // Many originators and sequences through a small cache, against a std::set + deque model.
+  DuplicateCache cache(37);
+  std::set<std::pair<NodeId, std::uint32_t>> model;
+  std::deque<std::pair<NodeId, std::uint32_t>> order;
+  std::uint64_t state = 12345;
+  for (int i = 0; i < 20000; ++i) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    const auto originator = static_cast<NodeId>((state >> 33U) % 7U);
+    const auto sequence = static_cast<std::uint32_t>((state >> 40U) % 60U);
+    const std::pair<NodeId, std::uint32_t> pair{originator, sequence};
+    const bool fresh = !model.contains(pair);
+    if (fresh) {
+      if (order.size() == 37U) {
+        model.erase(order.front());
+        order.pop_front();
+      }
+      model.insert(pair);
+      order.push_back(pair);
+    }
+    ASSERT_EQ(cache.insert(originator, sequence), fresh) << "step " << i;
+    ASSERT_EQ(cache.size(), model.size());
+  }
+  for (NodeId o = 0; o < 7; ++o) {
+    for (std::uint32_t s = 0; s < 60; ++s) EXPECT_EQ(cache.contains(o, s), model.contains({o, s}));
+  }
+  // The all-ones key is a valid pair too.
+  EXPECT_TRUE(cache.insert(0xffffffffU, 0xffffffffU));
+  EXPECT_TRUE(cache.contains(0xffffffffU, 0xffffffffU));
+  EXPECT_FALSE(cache.insert(0xffffffffU, 0xffffffffU));
 }
 
 }  // namespace

@@ -9,6 +9,8 @@ namespace swarmnet {
 
 namespace {
 
+constexpr std::size_t kArity = 4;
+
 // A TimerId packs the slot (low 32 bits, +1 so that no id is kNoTimer) and the slot's generation
 // (high 32 bits). A generation wraps after 2^32 reuses of one slot; an id kept that long could
 // then match a newer timer, which no protocol timer lives long enough to meet.
@@ -36,8 +38,7 @@ TimerId Scheduler::schedule_at(SimTime time, Callback callback) {
   Slot& s = slots_[slot];
   s.callback = std::move(callback);
   s.armed = true;
-  heap_.push_back(Entry{time, next_sequence_++, slot, s.generation});
-  std::push_heap(heap_.begin(), heap_.end(), Later{});
+  heap_push(Entry{time, next_sequence_++, slot, s.generation});
   ++live_;
   return make_id(slot, s.generation);
 }
@@ -71,9 +72,8 @@ std::uint64_t Scheduler::run_until(SimTime end) {
   }
   std::uint64_t ran = 0;
   while (!heap_.empty() && heap_.front().time < end) {
-    std::pop_heap(heap_.begin(), heap_.end(), Later{});
-    const Entry entry = heap_.back();
-    heap_.pop_back();
+    const Entry entry = heap_.front();
+    heap_pop();
     if (!is_live(entry)) {
       --tombstones_;
       continue;
@@ -112,7 +112,7 @@ bool Scheduler::is_live(const Entry& entry) const {
 
 void Scheduler::release(std::uint32_t slot) {
   Slot& s = slots_[slot];
-  s.callback = nullptr;
+  s.callback.reset();
   s.armed = false;
   ++s.generation;
   free_slots_.push_back(slot);
@@ -122,8 +122,47 @@ void Scheduler::release(std::uint32_t slot) {
 void Scheduler::compact() {
   // Keys (time, sequence) are unique, so rebuilding the heap cannot change the order events pop.
   std::erase_if(heap_, [this](const Entry& entry) { return !is_live(entry); });
-  std::make_heap(heap_.begin(), heap_.end(), Later{});
+  for (std::size_t i = heap_.size() / kArity + 1; i-- > 0;) sift_down(i);
   tombstones_ = 0;
+}
+
+void Scheduler::heap_push(const Entry& entry) {
+  heap_.push_back(entry);
+  std::size_t index = heap_.size() - 1;
+  while (index > 0) {
+    const std::size_t parent = (index - 1) / kArity;
+    if (!earlier(entry, heap_[parent])) break;
+    heap_[index] = heap_[parent];
+    index = parent;
+  }
+  heap_[index] = entry;
+}
+
+void Scheduler::heap_pop() {
+  const Entry last = heap_.back();
+  heap_.pop_back();
+  if (heap_.empty()) return;
+  heap_.front() = last;
+  sift_down(0);
+}
+
+void Scheduler::sift_down(std::size_t index) {
+  const std::size_t size = heap_.size();
+  if (index >= size) return;
+  const Entry entry = heap_[index];
+  while (true) {
+    const std::size_t first = index * kArity + 1;
+    if (first >= size) break;
+    const std::size_t last = std::min(first + kArity, size);
+    std::size_t best = first;
+    for (std::size_t child = first + 1; child < last; ++child) {
+      if (earlier(heap_[child], heap_[best])) best = child;
+    }
+    if (!earlier(heap_[best], entry)) break;
+    heap_[index] = heap_[best];
+    index = best;
+  }
+  heap_[index] = entry;
 }
 
 }  // namespace swarmnet

@@ -6,11 +6,19 @@
 // entries. Cancelling releases the slot (and the callback's captures) at once and leaves the heap
 // entry behind as a tombstone that is skipped when it surfaces (lazy deletion); when tombstones
 // outnumber live entries the heap is compacted, so cancelled timers never accumulate.
+//
+// Cost (docs/performance.md): the channel schedules two events per receiver of every frame, so
+// the callback type stores captures of up to EventCallback::kInlineBytes inline (no allocation
+// per event; a std::function handed in by a plugin fits as well), and the heap is 4-ary (half the
+// depth of a binary heap, children of a node on one cache line).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "swarmnet/node_context.hpp"
@@ -18,9 +26,89 @@
 
 namespace swarmnet {
 
+// A move-only `void()` callable. Callables of at most kInlineBytes (nothrow movable) live in the
+// object itself; larger ones on the heap. Built from an empty std::function or nullptr it is
+// empty.
+class EventCallback {
+ public:
+  static constexpr std::size_t kInlineBytes = 48;
+
+  EventCallback() noexcept = default;
+  EventCallback(std::nullptr_t) noexcept {}  // NOLINT(google-explicit-constructor)
+  template <typename F, typename D = std::decay_t<F>>
+  requires(!std::is_same_v<D, EventCallback> && !std::is_same_v<D, std::nullptr_t> &&
+           std::is_invocable_r_v<void, D&>)
+      EventCallback(F&& f) {  // NOLINT(google-explicit-constructor)
+    if constexpr (std::is_constructible_v<bool, const D&>) {
+      if (!static_cast<bool>(f)) return;  // an empty std::function or a null function pointer
+    }
+    if constexpr (fits_inline<D>()) {
+      ::new (static_cast<void*>(storage_)) D(std::forward<F>(f));
+      ops_ = &kInlineOps<D>;
+    } else {
+      ::new (static_cast<void*>(storage_)) D*(new D(std::forward<F>(f)));
+      ops_ = &kHeapOps<D>;
+    }
+  }
+  EventCallback(EventCallback&& other) noexcept : ops_(other.ops_) {
+    if (ops_ != nullptr) ops_->relocate(storage_, other.storage_);
+    other.ops_ = nullptr;
+  }
+  EventCallback& operator=(EventCallback&& other) noexcept {
+    if (this != &other) {
+      reset();
+      ops_ = other.ops_;
+      if (ops_ != nullptr) ops_->relocate(storage_, other.storage_);
+      other.ops_ = nullptr;
+    }
+    return *this;
+  }
+  EventCallback(const EventCallback&) = delete;
+  EventCallback& operator=(const EventCallback&) = delete;
+  ~EventCallback() { reset(); }
+
+  void reset() noexcept {
+    if (ops_ == nullptr) return;
+    const Ops* ops = ops_;
+    ops_ = nullptr;
+    ops->destroy(storage_);
+  }
+  explicit operator bool() const noexcept { return ops_ != nullptr; }
+  void operator()() { ops_->invoke(storage_); }
+
+ private:
+  struct Ops {
+    void (*invoke)(void* storage);
+    // Move-constructs into `to` from `from` and destroys `from`.
+    void (*relocate)(void* to, void* from) noexcept;
+    void (*destroy)(void* storage) noexcept;
+  };
+  template <typename D>
+  static constexpr bool fits_inline() {
+    return sizeof(D) <= kInlineBytes && alignof(D) <= alignof(std::max_align_t) &&
+           std::is_nothrow_move_constructible_v<D>;
+  }
+  template <typename D>
+  static constexpr Ops kInlineOps{[](void* s) { (*std::launder(static_cast<D*>(s)))(); },
+                                  [](void* to, void* from) noexcept {
+                                    D* source = std::launder(static_cast<D*>(from));
+                                    ::new (to) D(std::move(*source));
+                                    source->~D();
+                                  },
+                                  [](void* s) noexcept { std::launder(static_cast<D*>(s))->~D(); }};
+  template <typename D>
+  static constexpr Ops kHeapOps{
+      [](void* s) { (**std::launder(static_cast<D**>(s)))(); },
+      [](void* to, void* from) noexcept { ::new (to) D*(*std::launder(static_cast<D**>(from))); },
+      [](void* s) noexcept { delete *std::launder(static_cast<D**>(s)); }};
+
+  alignas(std::max_align_t) unsigned char storage_[kInlineBytes];
+  const Ops* ops_ = nullptr;
+};
+
 class Scheduler {
  public:
-  using Callback = std::function<void()>;
+  using Callback = EventCallback;
 
   Scheduler() = default;
   Scheduler(const Scheduler&) = delete;
@@ -65,16 +153,18 @@ class Scheduler {
     std::uint32_t slot;
     std::uint32_t generation;
   };
-  // std::push_heap builds a max-heap; "later" entries compare less so the earliest is on top.
-  struct Later {
-    bool operator()(const Entry& a, const Entry& b) const {
-      return a.time != b.time ? a.time > b.time : a.sequence > b.sequence;
-    }
-  };
+  static bool earlier(const Entry& a, const Entry& b) {
+    return a.time != b.time ? a.time < b.time : a.sequence < b.sequence;
+  }
 
   [[nodiscard]] bool is_live(const Entry& entry) const;
   void release(std::uint32_t slot);
   void compact();
+  // The 4-ary min-heap over heap_ (earliest first); keys are unique, so the order events pop in
+  // does not depend on the heap's shape.
+  void heap_push(const Entry& entry);
+  void heap_pop();  // removes heap_.front()
+  void sift_down(std::size_t index);
 
   SimTime now_{kTimeZero};
   std::uint64_t next_sequence_ = 0;

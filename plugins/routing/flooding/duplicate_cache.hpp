@@ -4,11 +4,14 @@
 // LRU: seeing a duplicate does not refresh an entry). A pair evicted and then received again is
 // taken for new and relayed once more, so the capacity should exceed the number of distinct
 // packets a node can see while copies of one packet are still travelling.
+//
+// Storage: a ring of keys in insertion order and an open-addressing hash set (linear probing,
+// at most half full, backward-shift deletion) over them. Every node looks its cache up once per
+// copy it hears, so this is on the flooding hot path; a tree set cost a cache miss per level.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
-#include <set>
 #include <vector>
 
 #include "swarmnet/ids.hpp"
@@ -22,17 +25,29 @@ class DuplicateCache {
   // Records the pair; returns true if it was not in the cache (a packet seen for the first time).
   bool insert(NodeId originator, std::uint32_t sequence);
   [[nodiscard]] bool contains(NodeId originator, std::uint32_t sequence) const;
-  [[nodiscard]] std::size_t size() const { return keys_.size(); }
+  [[nodiscard]] std::size_t size() const { return size_; }
   [[nodiscard]] std::size_t capacity() const { return order_.size(); }
 
  private:
+  // A slot holding kEmpty is free; the one key equal to kEmpty is tracked by has_empty_key_.
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+
   static std::uint64_t key(NodeId originator, std::uint32_t sequence) {
     return (static_cast<std::uint64_t>(originator) << 32U) | sequence;
   }
+  [[nodiscard]] std::size_t home(std::uint64_t k) const;
+  // The slot holding `k`, or the free slot where it would go.
+  [[nodiscard]] std::size_t find_slot(std::uint64_t k) const;
+  bool contains_key(std::uint64_t k) const;
+  void add_key(std::uint64_t k);
+  void erase_key(std::uint64_t k);
 
-  std::set<std::uint64_t> keys_;
   std::vector<std::uint64_t> order_;  // ring of keys in insertion order
   std::size_t next_ = 0;              // ring slot the next insertion takes (the oldest when full)
+  std::size_t size_ = 0;
+  std::vector<std::uint64_t> slots_;  // hash set; size a power of two >= 2 x capacity
+  std::size_t mask_ = 0;
+  bool has_empty_key_ = false;
 };
 
 }  // namespace swarmnet::flooding
