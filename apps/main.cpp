@@ -1,4 +1,4 @@
-// The swarmnet command: run, validate, plugins.
+// The swarmnet command: run, validate, plugins, sweep, stats, replay, bench.
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -13,10 +14,13 @@
 #include "default_scenario.hpp"
 #include "plugin/plugin_catalog.hpp"
 #include "plugin/plugin_loader.hpp"
+#include "replay_command.hpp"
 #include "run/network_process.hpp"
 #include "run/run.hpp"
 #include "run/stop_signal.hpp"
 #include "scenario/scenario_loader.hpp"
+#include "stats_command.hpp"
+#include "sweep_command.hpp"
 
 namespace {
 
@@ -118,7 +122,7 @@ int plugins_command(const std::string& name) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int run_main(int argc, char** argv) {
   CLI::App app{"SwarmNet: networked robot swarms, robot and network co-simulation"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("swarmnet ") + SWARMNET_VERSION);
@@ -167,6 +171,54 @@ int main(int argc, char** argv) {
   auto* plugins = app.add_subcommand("plugins", "list plugins, or describe one");
   plugins->add_option("name", plugin_name, "plugin to describe");
 
+  swarmnet::SweepOptions sweep_options;
+  std::string sweep_file;
+  std::string sweep_out;
+  auto* sweep = app.add_subcommand(
+      "sweep", "run a grid of scenario overrides times seeds in parallel (docs/experiments.md)");
+  sweep->add_option("file", sweep_file, "sweep file")->required()->check(CLI::ExistingFile);
+  sweep->add_option("-j,--jobs", sweep_options.jobs, "runs at once (default: number of cores)")
+      ->check(CLI::PositiveNumber);
+  sweep->add_option("--out", sweep_out,
+                    "sweep directory (default: the file's out, else runs/sweeps/NAME)");
+  sweep->add_flag("--check", sweep_options.validate_only,
+                  "validate the sweep and every scenario it expands to, run nothing");
+
+  swarmnet::StatsOptions stats_options;
+  std::string stats_file;
+  std::string stats_by;
+  auto* stats = app.add_subcommand(
+      "stats", "per-group mean, sd, 95% confidence interval and Welch's t-test of a results.csv");
+  stats->add_option("file", stats_file, "results.csv of a sweep")
+      ->required()
+      ->check(CLI::ExistingFile);
+  stats->add_option("--by", stats_by, "columns that define the groups, comma-separated");
+  stats->add_option("--metric", stats_options.metrics, "numeric column to summarise (repeatable)")
+      ->required();
+  stats->add_option("--baseline", stats_options.baseline,
+                    "compare every group against this one (its --by values, comma-separated) "
+                    "instead of all pairs");
+  stats->add_flag("--json", stats_options.json, "machine-readable output");
+
+  swarmnet::ReplayCommandOptions replay_options;
+  std::string replay_dir;
+  std::string replay_out;
+  std::string replay_scenario;
+  std::string replay_positions;
+  std::string replay_traffic;
+  auto* replay = app.add_subcommand(
+      "replay", "the network half alone, from a run's recorded motion and traffic");
+  replay->add_option("run_dir", replay_dir, "run directory (scenario, positions.bin, traffic.csv)")
+      ->check(CLI::ExistingDirectory);
+  replay->add_option("--scenario", replay_scenario, "resolved scenario (scenario.resolved.yaml)")
+      ->check(CLI::ExistingFile);
+  replay->add_option("--positions", replay_positions, "exact positions record (positions.bin)")
+      ->check(CLI::ExistingFile);
+  replay->add_option("--traffic", replay_traffic, "traffic schedule (traffic.csv)")
+      ->check(CLI::ExistingFile);
+  replay->add_option("--out", replay_out, "output directory (default RUN_DIR/replay)");
+  replay->add_flag("-q,--quiet", replay_options.quiet, "print nothing but errors");
+
   std::string bench_out = "runs/bench/transport.json";
   double bench_min_time = 0.5;
   auto* bench = app.add_subcommand("bench", "performance benchmarks");
@@ -195,6 +247,36 @@ int main(int argc, char** argv) {
     return swarmnet::run_network_process(net_options);
   }
   if (*validate) return validate_command(validate_args);
+  if (*sweep) {
+    sweep_options.file = sweep_file;
+    sweep_options.out = sweep_out;
+    return swarmnet::sweep_command(sweep_options);
+  }
+  if (*stats) {
+    stats_options.file = stats_file;
+    std::stringstream columns(stats_by);
+    for (std::string name; std::getline(columns, name, ',');) {
+      if (!name.empty()) stats_options.by.push_back(name);
+    }
+    return swarmnet::stats_command(stats_options, std::cout);
+  }
+  if (*replay) {
+    replay_options.run_dir = replay_dir;
+    replay_options.scenario = replay_scenario;
+    replay_options.positions = replay_positions;
+    replay_options.traffic = replay_traffic;
+    replay_options.out = replay_out;
+    return swarmnet::replay_command(replay_options);
+  }
   if (*plugins) return plugins_command(plugin_name);
   return kBadInput;
+}
+
+int main(int argc, char** argv) {
+  try {
+    return run_main(argc, argv);
+  } catch (const std::exception& error) {
+    // Every command handles its own errors; this is the last line against a crash.
+    return fail(kRunFailed, error.what());
+  }
 }

@@ -17,6 +17,7 @@
 #include "run/mobility_trace.hpp"
 #include "run/network_link.hpp"
 #include "run/output_files.hpp"
+#include "run/positions_trace.hpp"
 #include "run/progress_line.hpp"
 #include "run/run_error.hpp"
 #include "run/stop_signal.hpp"
@@ -115,8 +116,9 @@ struct RobotLoopCost {
 };
 
 std::string drive_robot_half(const Scenario& scenario, RobotWorld& world, StepChannel& channel,
-                             MobilityTraceWriter* mobility, TrafficScheduleWriter* traffic,
-                             ProgressLine& progress, RobotLoopCost& cost) {
+                             MobilityTraceWriter* mobility, PositionsTraceWriter* positions,
+                             TrafficScheduleWriter* traffic, ProgressLine& progress,
+                             RobotLoopCost& cost) {
   const std::uint64_t steps = scenario.step_count();
   const std::uint64_t lag = delivery_lag(scenario.sync);
   StepBatch batch;
@@ -148,6 +150,7 @@ std::string drive_robot_half(const Scenario& scenario, RobotWorld& world, StepCh
     batch.positions.resize(bodies.size());
     for (std::size_t i = 0; i < bodies.size(); ++i) batch.positions[i] = bodies[i].position;
     if (mobility != nullptr) mobility->sample(step, batch.positions);
+    if (positions != nullptr) positions->sample(batch.positions);
 
     batch.messages.clear();
     world.step(*deliveries, batch.messages);
@@ -200,6 +203,14 @@ RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
           std::llround(scenario.output.mobility_interval_s / scenario.step_s));
       mobility.emplace(mobility_file->stream(), interval, scenario.step_s);
     }
+    // Exact positions of every step beside the rounded ns-2 trace, for `swarmnet replay`.
+    std::optional<AtomicFile> positions_file;
+    std::optional<PositionsTraceWriter> positions;
+    if (scenario.output.mobility_trace) {
+      positions_file.emplace(outcome.dir / kPositionsTraceFile);
+      positions.emplace(positions_file->stream(), scenario.robots.count, scenario.step_count(),
+                        from_seconds(scenario.step_s));
+    }
     std::optional<AtomicFile> traffic_file;
     std::optional<TrafficScheduleWriter> traffic;
     if (scenario.output.traffic_schedule) {
@@ -224,6 +235,7 @@ RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
         handshake(scenario, outcome.dir, channel);
         link->connected();
         report_text = drive_robot_half(scenario, world, channel, mobility ? &*mobility : nullptr,
+                                       positions ? &*positions : nullptr,
                                        traffic ? &*traffic : nullptr, progress, cost);
       } catch (const PeerLost& error) {
         robot_error = error.what();
@@ -255,6 +267,7 @@ RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
     const double sim_s = static_cast<double>(scenario.step_count()) * scenario.step_s;
 
     if (mobility_file) mobility_file->commit();
+    if (positions_file) positions_file->commit();
     if (traffic_file) traffic_file->commit();
 
     nlohmann::ordered_json& s = outcome.summary;
@@ -283,7 +296,10 @@ RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
     nlohmann::ordered_json outputs = {
         {"summary", kSummaryFile}, {"scenario", kResolvedScenarioFile}, {"log", kLogFile}};
     if (scenario.output.packet_trace) outputs["packet_trace"] = kPacketTraceFile;
-    if (scenario.output.mobility_trace) outputs["mobility_trace"] = kMobilityTraceFile;
+    if (scenario.output.mobility_trace) {
+      outputs["mobility_trace"] = kMobilityTraceFile;
+      outputs["positions"] = kPositionsTraceFile;
+    }
     if (scenario.output.traffic_schedule) outputs["traffic_schedule"] = kTrafficScheduleFile;
     s["outputs"] = outputs;
 

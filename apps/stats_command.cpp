@@ -1,0 +1,242 @@
+#include "stats_command.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "stats/sample_statistics.hpp"
+
+namespace swarmnet {
+
+namespace {
+
+constexpr int kBadInput = 2;
+
+std::string join(const std::vector<std::string>& parts, const std::string& separator) {
+  std::string text;
+  for (std::size_t i = 0; i < parts.size(); ++i) text += (i ? separator : "") + parts[i];
+  return text;
+}
+
+std::string number(double value, int precision = 6) {
+  if (std::isnan(value)) return "-";
+  std::ostringstream text;
+  text << std::setprecision(precision) << value;
+  return text.str();
+}
+
+nlohmann::ordered_json json_number(double value) {
+  return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
+}
+
+void print_table(std::ostream& out, const std::vector<std::vector<std::string>>& rows) {
+  std::vector<std::size_t> width;
+  for (const auto& row : rows) {
+    width.resize(std::max(width.size(), row.size()), 0);
+    for (std::size_t i = 0; i < row.size(); ++i) width[i] = std::max(width[i], row[i].size());
+  }
+  for (const auto& row : rows) {
+    std::string line;
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      if (i) line += "  ";
+      line += row[i];
+      if (i + 1 < row.size()) line.append(width[i] - row[i].size(), ' ');
+    }
+    out << line << '\n';
+  }
+}
+
+struct Group {
+  std::vector<std::string> key;
+  std::map<std::string, std::vector<double>> values;  // metric -> values
+};
+
+}  // namespace
+
+std::vector<std::vector<std::string>> read_csv(std::istream& in) {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> row;
+  std::string cell;
+  bool quoted = false;
+  bool any = false;
+  char c = 0;
+  while (in.get(c)) {
+    any = true;
+    if (quoted) {
+      if (c == '"') {
+        if (in.peek() == '"') {
+          cell += '"';
+          in.get(c);
+        } else {
+          quoted = false;
+        }
+      } else {
+        cell += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      row.push_back(std::move(cell));
+      cell.clear();
+    } else if (c == '\n') {
+      row.push_back(std::move(cell));
+      cell.clear();
+      rows.push_back(std::move(row));
+      row.clear();
+      any = false;
+    } else if (c != '\r') {
+      cell += c;
+    }
+  }
+  if (any) {
+    row.push_back(std::move(cell));
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+int stats_command(const StatsOptions& options, std::ostream& out) {
+  auto fail = [](const std::string& message) {
+    std::fprintf(stderr, "swarmnet: error: %s\n", message.c_str());
+    return kBadInput;
+  };
+  std::ifstream in(options.file);
+  if (!in) return fail("cannot read " + options.file.string());
+  const auto rows = read_csv(in);
+  if (rows.empty()) return fail(options.file.string() + ": empty file");
+  const auto& header = rows.front();
+  auto column = [&](const std::string& name) -> std::ptrdiff_t {
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      if (header[i] == name) return static_cast<std::ptrdiff_t>(i);
+    }
+    return -1;
+  };
+  std::vector<std::size_t> by;
+  std::vector<std::size_t> metric_columns;
+  for (const auto& name : options.by) {
+    const auto i = column(name);
+    if (i < 0) return fail(options.file.string() + ": no column '" + name + "' (--by)");
+    by.push_back(static_cast<std::size_t>(i));
+  }
+  for (const auto& name : options.metrics) {
+    const auto i = column(name);
+    if (i < 0) return fail(options.file.string() + ": no column '" + name + "' (--metric)");
+    metric_columns.push_back(static_cast<std::size_t>(i));
+  }
+
+  std::vector<Group> groups;
+  std::map<std::vector<std::string>, std::size_t> group_of;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    const auto& row = rows[r];
+    std::vector<std::string> key;
+    key.reserve(by.size());
+    for (const std::size_t i : by) key.push_back(i < row.size() ? row[i] : "");
+    auto [it, added] = group_of.emplace(key, groups.size());
+    if (added) groups.push_back({key, {}});
+    Group& group = groups[it->second];
+    for (std::size_t m = 0; m < metric_columns.size(); ++m) {
+      auto& values = group.values[options.metrics[m]];
+      const std::size_t i = metric_columns[m];
+      if (i >= row.size() || row[i].empty()) continue;  // a failed run, or no value
+      std::size_t used = 0;
+      double value = 0.0;
+      try {
+        value = std::stod(row[i], &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != row[i].size()) {
+        return fail(options.file.string() + ":" + std::to_string(r + 1) + ": column '" +
+                    options.metrics[m] + "': '" + row[i] + "' is not a number");
+      }
+      values.push_back(value);
+    }
+  }
+
+  std::optional<std::size_t> baseline;
+  if (!options.baseline.empty()) {
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      if (join(groups[g].key, ",") == options.baseline) baseline = g;
+    }
+    if (!baseline) {
+      std::string known;
+      for (const auto& g : groups) known += (known.empty() ? "" : "; ") + join(g.key, ",");
+      return fail("--baseline " + options.baseline + ": no such group; groups are: " + known);
+    }
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t a = 0; a < groups.size(); ++a) {
+    for (std::size_t b = a + 1; b < groups.size(); ++b) {
+      if (!baseline) {
+        pairs.emplace_back(a, b);
+      } else if (a == *baseline || b == *baseline) {
+        pairs.emplace_back(*baseline, a == *baseline ? b : a);
+      }
+    }
+  }
+  auto label = [&](const Group& g) { return by.empty() ? std::string("all") : join(g.key, ","); };
+  const std::string ci_name = number(100.0 * options.confidence) + "%";
+
+  nlohmann::ordered_json json = nlohmann::ordered_json::object();
+  json["file"] = options.file.string();
+  json["by"] = options.by;
+  json["confidence"] = options.confidence;
+  json["metrics"] = nlohmann::ordered_json::object();
+  for (const auto& metric : options.metrics) {
+    std::vector<std::vector<std::string>> table;
+    std::vector<std::string> head = options.by;
+    if (head.empty()) head.emplace_back("group");
+    head.insert(head.end(), {"n", "mean", "sd", ci_name + " CI low", ci_name + " CI high"});
+    table.push_back(head);
+    nlohmann::ordered_json jgroups = nlohmann::ordered_json::array();
+    for (const auto& group : groups) {
+      const auto& values = group.values.at(metric);
+      const stats::SampleSummary s = stats::summarize(values, options.confidence);
+      std::vector<std::string> line = by.empty() ? std::vector<std::string>{"all"} : group.key;
+      line.insert(line.end(), {std::to_string(s.n), number(s.mean), number(s.sd), number(s.ci_low),
+                               number(s.ci_high)});
+      table.push_back(line);
+      nlohmann::ordered_json jg;
+      jg["group"] = nlohmann::ordered_json::object();
+      for (std::size_t i = 0; i < by.size(); ++i) jg["group"][options.by[i]] = group.key[i];
+      jg["n"] = s.n;
+      jg["mean"] = json_number(s.mean);
+      jg["sd"] = json_number(s.sd);
+      jg["ci_low"] = json_number(s.ci_low);
+      jg["ci_high"] = json_number(s.ci_high);
+      jgroups.push_back(jg);
+    }
+    std::vector<std::vector<std::string>> tests = {{"group A", "group B", "t", "df", "p"}};
+    nlohmann::ordered_json jtests = nlohmann::ordered_json::array();
+    for (const auto& [a, b] : pairs) {
+      const stats::WelchTest w =
+          stats::welch_test(groups[a].values.at(metric), groups[b].values.at(metric));
+      tests.push_back(
+          {label(groups[a]), label(groups[b]), number(w.t, 4), number(w.df, 4), number(w.p, 4)});
+      jtests.push_back({{"a", label(groups[a])},
+                        {"b", label(groups[b])},
+                        {"t", json_number(w.t)},
+                        {"df", json_number(w.df)},
+                        {"p", json_number(w.p)}});
+    }
+    json["metrics"][metric] = {{"groups", jgroups}, {"welch", jtests}};
+    if (!options.json) {
+      out << metric << '\n';
+      print_table(out, table);
+      if (!pairs.empty()) {
+        out << "\nWelch's t-test of " << metric << " (two-sided)\n";
+        print_table(out, tests);
+      }
+      out << '\n';
+    }
+  }
+  if (options.json) out << json.dump(2) << '\n';
+  return 0;
+}
+
+}  // namespace swarmnet

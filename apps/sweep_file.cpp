@@ -1,0 +1,287 @@
+#include "sweep_file.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace swarmnet {
+
+namespace {
+
+std::string join_lines(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const auto& line : lines) text += (text.empty() ? "" : "\n") + line;
+  return text;
+}
+
+class Problems {
+ public:
+  explicit Problems(std::string file) : file_(std::move(file)) {}
+  [[nodiscard]] std::string locate(const YAML::Node& node) const {
+    const YAML::Mark mark = node.Mark();
+    if (mark.is_null() || mark.line < 0) return file_;
+    return file_ + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
+  }
+  void add(const YAML::Node& node, const std::string& key, const std::string& what,
+           const std::string& expected = "") {
+    std::string line = locate(node) + ": " + key + ": " + what;
+    if (!expected.empty()) line += "; expected " + expected;
+    lines_.push_back(std::move(line));
+  }
+  void add_line(std::string line) { lines_.push_back(std::move(line)); }
+  [[nodiscard]] const std::vector<std::string>& lines() const { return lines_; }
+
+ private:
+  std::string file_;
+  std::vector<std::string> lines_;
+};
+
+std::string flow_text(const YAML::Node& node) {
+  YAML::Emitter out;
+  out.SetMapFormat(YAML::Flow);
+  out.SetSeqFormat(YAML::Flow);
+  out << node;
+  return out.c_str();
+}
+
+// A readable, file-name-safe form of a value: its text with anything but [A-Za-z0-9.+-] as '_';
+// a mapping with a plugin key goes by the plugin's name; anything long by its position.
+std::string id_part(const YAML::Node& node, std::size_t index) {
+  std::string text;
+  if (node.IsScalar()) {
+    text = node.Scalar();
+  } else if (node.IsMap() && node["plugin"] && node["plugin"].IsScalar()) {
+    text = node["plugin"].Scalar();
+  }
+  for (char& c : text) {
+    const bool safe = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                      c == '.' || c == '+' || c == '-';
+    if (!safe) c = '_';
+  }
+  if (text.empty() || text.size() > 32 || text == "." || text == "..") {
+    text = "v" + std::to_string(index + 1);
+  }
+  return text;
+}
+
+std::vector<std::string> split_key(const std::string& key) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t dot = key.find('.', start);
+    parts.push_back(key.substr(start, dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return parts;
+}
+
+bool valid_key(const std::string& key) {
+  if (key.empty()) return false;
+  return std::ranges::none_of(split_key(key), [](const std::string& p) { return p.empty(); });
+}
+
+// The short name of a key: its last component, or the one before when that is "plugin" (so that
+// network.routing.plugin reads "routing").
+std::string short_name(const std::string& key) {
+  const auto parts = split_key(key);
+  if (parts.size() >= 2 && parts.back() == "plugin") return parts[parts.size() - 2];
+  return parts.back();
+}
+
+std::uint64_t read_seed(const YAML::Node& node, Problems& problems, const std::string& key,
+                        bool& ok) {
+  try {
+    const auto text = node.IsScalar() ? node.Scalar() : std::string();
+    if (!text.empty() && text.front() != '-') return node.as<std::uint64_t>();
+  } catch (const YAML::Exception&) {
+  }
+  problems.add(node, key, "not a seed", "an integer 0..2^64-1");
+  ok = false;
+  return 0;
+}
+
+constexpr const char* kForm =
+    "keys base (scenario file), out (directory), set (key path: value), grid (key path: list of "
+    "values), seeds (list of integers, or {first: N, count: M})";
+
+}  // namespace
+
+SweepError::SweepError(std::vector<std::string> problems)
+    : std::runtime_error(join_lines(problems)), problems_(std::move(problems)) {}
+
+SweepSpec load_sweep(const std::filesystem::path& file) {
+  SweepSpec spec;
+  spec.file = file;
+  const std::string name = file.string();
+  Problems problems(name);
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(name);
+  } catch (const YAML::BadFile&) {
+    throw SweepError({name + ": cannot read the file"});
+  } catch (const YAML::ParserException& error) {
+    throw SweepError({name + ":" + std::to_string(error.mark.line + 1) + ":" +
+                      std::to_string(error.mark.column + 1) + ": not valid YAML: " + error.msg});
+  }
+  if (!root.IsMap()) throw SweepError({name + ": a sweep file is a mapping; expected " + kForm});
+
+  for (const auto& entry : root) {
+    const std::string key = entry.first.as<std::string>();
+    if (key != "base" && key != "out" && key != "set" && key != "grid" && key != "seeds") {
+      problems.add(entry.first, key, "unknown key", kForm);
+    }
+  }
+
+  const YAML::Node base = root["base"];
+  if (!base) {
+    problems.add_line(name +
+                      ": base: missing; expected the scenario file to sweep, relative to "
+                      "the sweep file");
+  } else if (!base.IsScalar() || base.Scalar().empty()) {
+    problems.add(base, "base", "not a file name", "a scenario file relative to the sweep file");
+  } else {
+    spec.base = std::filesystem::absolute(file.parent_path() / base.Scalar()).lexically_normal();
+    if (!std::filesystem::is_regular_file(spec.base)) {
+      problems.add(base, "base", "no such file: " + spec.base.string(),
+                   "an existing scenario file");
+    }
+  }
+
+  if (const YAML::Node out = root["out"]) {
+    if (!out.IsScalar() || out.Scalar().empty()) {
+      problems.add(out, "out", "not a directory name", "a path");
+    } else {
+      spec.out = out.Scalar();
+    }
+  }
+
+  if (const YAML::Node set = root["set"]) {
+    if (!set.IsMap()) {
+      problems.add(set, "set", "not a mapping", "key path: value, e.g. duration_s: 60");
+    } else {
+      for (const auto& entry : set) {
+        const std::string key = entry.first.as<std::string>();
+        if (!valid_key(key)) {
+          problems.add(entry.first, "set." + key, "not a key path", "a.b.c");
+          continue;
+        }
+        spec.fixed.push_back({key, flow_text(entry.second), problems.locate(entry.second)});
+      }
+    }
+  }
+
+  const YAML::Node grid = root["grid"];
+  if (!grid) {
+    problems.add_line(name +
+                      ": grid: missing; expected key path: list of values (an empty "
+                      "mapping {} runs the base scenario alone)");
+  } else if (!grid.IsMap()) {
+    problems.add(grid, "grid", "not a mapping",
+                 "key path: list of values, e.g. robots.count: [25, 50]");
+  } else {
+    for (const auto& entry : grid) {
+      const std::string key = entry.first.as<std::string>();
+      if (!valid_key(key)) {
+        problems.add(entry.first, "grid." + key, "not a key path", "a.b.c");
+        continue;
+      }
+      const YAML::Node values = entry.second;
+      if (!values.IsSequence() || values.size() == 0) {
+        problems.add(values, "grid." + key, "not a non-empty list", "[value, value, ...]");
+        continue;
+      }
+      SweepAxis axis;
+      axis.key = key;
+      axis.name = short_name(key);
+      std::set<std::string> seen;
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        SweepValue value{flow_text(values[i]), id_part(values[i], i), problems.locate(values[i])};
+        if (!seen.insert(value.id_part).second) {
+          problems.add(values[i], "grid." + key,
+                       "value " + value.text + " gives the same run id as an earlier one",
+                       "distinct values");
+        }
+        axis.values.push_back(std::move(value));
+      }
+      for (const auto& fixed : spec.fixed) {
+        if (fixed.key == key) {
+          problems.add(entry.first, "grid." + key, "also given under set", "each key once");
+        }
+      }
+      spec.axes.push_back(std::move(axis));
+    }
+  }
+  // Short names must tell the axes apart; otherwise the whole key path names the axis.
+  for (auto& axis : spec.axes) {
+    const auto clashes = std::ranges::count_if(
+        spec.axes, [&](const SweepAxis& other) { return short_name(other.key) == axis.name; });
+    if (clashes > 1 || axis.name == "seed") {
+      axis.name = axis.key;
+      std::ranges::replace(axis.name, '.', '-');
+    }
+  }
+
+  const YAML::Node seeds = root["seeds"];
+  bool ok = true;
+  if (!seeds) {
+    spec.seeds = {1};
+  } else if (seeds.IsSequence() && seeds.size() > 0) {
+    std::set<std::uint64_t> seen;
+    for (const auto& node : seeds) {
+      bool valid = true;
+      const std::uint64_t seed = read_seed(node, problems, "seeds", valid);
+      if (valid && !seen.insert(seed).second) {
+        problems.add(node, "seeds", "repeated seed", "distinct seeds");
+      }
+      spec.seeds.push_back(seed);
+    }
+  } else if (seeds.IsMap() && seeds["first"] && seeds["count"] && seeds.size() == 2) {
+    const std::uint64_t first = read_seed(seeds["first"], problems, "seeds.first", ok);
+    const std::uint64_t count = read_seed(seeds["count"], problems, "seeds.count", ok);
+    if (ok && (count == 0 || count > 100000)) {
+      problems.add(seeds["count"], "seeds.count", "out of range", "1..100000");
+    } else if (ok) {
+      for (std::uint64_t i = 0; i < count; ++i) spec.seeds.push_back(first + i);
+    }
+  } else {
+    problems.add(seeds, "seeds", "not a list of seeds", "[1, 2, 3] or {first: 1, count: 10}");
+  }
+
+  if (!problems.lines().empty()) throw SweepError(problems.lines());
+  return spec;
+}
+
+std::vector<SweepRun> SweepSpec::expand() const {
+  std::size_t combinations = 1;
+  for (const auto& axis : axes) combinations *= axis.values.size();
+  std::vector<SweepRun> runs;
+  runs.reserve(combinations * seeds.size());
+  std::vector<std::size_t> index(axes.size(), 0);
+  for (std::size_t c = 0; c < combinations; ++c) {
+    // Mixed-radix digits of c, the last axis varying fastest.
+    std::size_t rest = c;
+    for (std::size_t a = axes.size(); a-- > 0;) {
+      index[a] = rest % axes[a].values.size();
+      rest /= axes[a].values.size();
+    }
+    for (const std::uint64_t seed : seeds) {
+      SweepRun run;
+      run.seed = seed;
+      run.value = index;
+      for (const auto& fixed : this->fixed) run.set.push_back(fixed.key + "=" + fixed.text);
+      for (std::size_t a = 0; a < axes.size(); ++a) {
+        const SweepValue& value = axes[a].values[index[a]];
+        run.set.push_back(axes[a].key + "=" + value.text);
+        run.id += axes[a].name + "-" + value.id_part + "_";
+      }
+      run.id += "seed-" + std::to_string(seed);
+      runs.push_back(std::move(run));
+    }
+  }
+  return runs;
+}
+
+}  // namespace swarmnet

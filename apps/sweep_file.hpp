@@ -1,0 +1,65 @@
+// A sweep file (docs/experiments.md): a base scenario, fixed overrides, a grid of overrides whose
+// cartesian product is run, and a list of seeds. Read, checked (every problem at once, as
+// "FILE:LINE:COLUMN: KEY: what is wrong; expected FORM", like a scenario) and expanded into runs.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace swarmnet {
+
+// Every problem found in a sweep file, one per line.
+class SweepError : public std::runtime_error {
+ public:
+  explicit SweepError(std::vector<std::string> problems);
+  [[nodiscard]] const std::vector<std::string>& problems() const { return problems_; }
+
+ private:
+  std::vector<std::string> problems_;
+};
+
+// One value of a swept key, as given to --set and as written in results.csv.
+struct SweepValue {
+  std::string text;      // YAML flow form: 50, aodv, {plugin: aodv}
+  std::string id_part;   // readable form for run ids: 50, aodv
+  std::string location;  // FILE:LINE:COLUMN of the value in the sweep file
+};
+
+struct SweepAxis {
+  std::string key;   // scenario key path, e.g. robots.count
+  std::string name;  // its short name in run ids, e.g. count
+  std::vector<SweepValue> values;
+};
+
+struct SweepFixed {
+  std::string key;
+  std::string text;
+  std::string location;
+};
+
+struct SweepRun {
+  std::string id;  // e.g. count-50_routing-aodv_seed-3
+  std::uint64_t seed = 0;
+  std::vector<std::size_t> value;  // index into each axis's values
+  std::vector<std::string> set;    // --set arguments (fixed ones first, then the grid's)
+};
+
+struct SweepSpec {
+  std::filesystem::path file;
+  std::filesystem::path base;  // absolute
+  std::filesystem::path out;   // as written ("" when not given)
+  std::vector<SweepFixed> fixed;
+  std::vector<SweepAxis> axes;
+  std::vector<std::uint64_t> seeds;
+
+  // Every run, in a stable order: axes in file order (the first varies slowest), then seeds.
+  [[nodiscard]] std::vector<SweepRun> expand() const;
+};
+
+// Reads and checks `file`; throws SweepError listing every problem.
+SweepSpec load_sweep(const std::filesystem::path& file);
+
+}  // namespace swarmnet

@@ -1,0 +1,180 @@
+#include "run/replay.hpp"
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "network/network_simulator.hpp"
+#include "plugin/plugin_loader.hpp"
+#include "run/atomic_file.hpp"
+#include "run/cpu_clock.hpp"
+#include "run/output_files.hpp"
+#include "run/positions_trace.hpp"
+#include "run/run_error.hpp"
+#include "scenario/scenario_loader.hpp"
+#include "step_data.hpp"
+
+namespace swarmnet {
+
+namespace {
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw RunError("cannot open " + path.string());
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+struct TrafficRow {
+  std::uint64_t step = 0;
+  std::int64_t inject_ns = 0;
+  AppMessage message;
+};
+
+std::uint64_t parse_unsigned(const std::string& field, const std::string& where) {
+  std::size_t used = 0;
+  std::uint64_t value = 0;
+  try {
+    value = std::stoull(field, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != field.size() || field.front() == '-') {
+    throw RunError(where + ": '" + field + "' is not a non-negative integer");
+  }
+  return value;
+}
+
+// traffic.csv (run/traffic_schedule.hpp), in file order (= send order within each step).
+std::vector<TrafficRow> read_traffic(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw RunError("cannot open " + path.string());
+  std::string line;
+  std::getline(in, line);
+  if (line != "message_id,step,inject_ns,source,destination,payload_bytes") {
+    throw RunError(path.string() + ":1: not a SwarmNet traffic schedule (unexpected header)");
+  }
+  std::vector<TrafficRow> rows;
+  std::size_t number = 1;
+  while (std::getline(in, line)) {
+    ++number;
+    if (line.empty()) continue;
+    const std::string where = path.string() + ":" + std::to_string(number);
+    std::vector<std::string> fields;
+    std::stringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) fields.push_back(cell);
+    if (fields.size() != 6) throw RunError(where + ": expected 6 fields");
+    TrafficRow row;
+    row.message.message_id = parse_unsigned(fields[0], where);
+    row.step = parse_unsigned(fields[1], where);
+    row.inject_ns = static_cast<std::int64_t>(parse_unsigned(fields[2], where));
+    row.message.source = static_cast<RobotId>(parse_unsigned(fields[3], where));
+    row.message.destination = fields[4] == "broadcast"
+                                  ? kBroadcast
+                                  : static_cast<RobotId>(parse_unsigned(fields[4], where));
+    const std::uint64_t bytes = parse_unsigned(fields[5], where);
+    if (bytes > kMaxPayloadBytes) throw RunError(where + ": payload larger than the maximum");
+    row.message.payload.assign(bytes, std::byte{0});
+    if (!rows.empty() && row.step < rows.back().step) {
+      throw RunError(where + ": steps are not in ascending order");
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+}  // namespace
+
+ReplayInputs ReplayInputs::from_run_dir(const std::filesystem::path& run_dir) {
+  return {run_dir / kResolvedScenarioFile, run_dir / kPositionsTraceFile,
+          run_dir / kTrafficScheduleFile};
+}
+
+ReplayOutcome replay_network(const ReplayInputs& inputs, const std::filesystem::path& out_dir) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  PluginLoader loader;
+  const Scenario scenario =
+      load_scenario_text(read_text(inputs.scenario), inputs.scenario.string(), loader);
+  const PositionsTrace positions = read_positions_trace(inputs.positions);
+  const std::vector<TrafficRow> traffic = read_traffic(inputs.traffic);
+  const SimTime step = from_seconds(scenario.step_s);
+  if (positions.robots != scenario.robots.count || positions.step != step ||
+      positions.steps != scenario.step_count()) {
+    throw RunError(inputs.positions.string() + " (" + std::to_string(positions.robots) +
+                   " robots, " + std::to_string(positions.steps) + " steps of " +
+                   std::to_string(positions.step.count()) + " ns) does not match " +
+                   inputs.scenario.string());
+  }
+
+  ReplayOutcome outcome;
+  outcome.dir = out_dir;
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec) throw RunError("cannot create " + out_dir.string() + ": " + ec.message());
+  std::filesystem::remove(out_dir / kSummaryFile, ec);
+
+  const double cpu_start = thread_cpu_seconds();
+  AtomicFile trace(out_dir / kPacketTraceFile);
+  NetworkSimulator simulator(scenario, loader, &trace.stream());
+  StepBatch batch;
+  StepResult result;
+  std::size_t next = 0;
+  for (std::uint64_t i = 0; i < positions.steps; ++i) {
+    batch.step = i;
+    batch.start = step * static_cast<std::int64_t>(i);
+    const auto at = positions.at_step(i);
+    batch.positions.assign(at.begin(), at.end());
+    batch.messages.clear();
+    for (; next < traffic.size() && traffic[next].step == i; ++next) {
+      const TrafficRow& row = traffic[next];
+      // The recorded injection time checks that seed and step length are the run's.
+      const SimTime inject =
+          batch.start + injection_offset(scenario.seed, row.message.message_id, step);
+      if (inject.count() != row.inject_ns) {
+        throw RunError(inputs.traffic.string() + ": message " +
+                       std::to_string(row.message.message_id) +
+                       " was injected at a time this scenario would not give it (another seed "
+                       "or step length?)");
+      }
+      batch.messages.push_back(row.message);
+    }
+    simulator.run_step(batch, result);
+  }
+  if (next != traffic.size()) {
+    throw RunError(inputs.traffic.string() + ": messages after the last step (" +
+                   std::to_string(traffic[next].step) + ")");
+  }
+  simulator.finish();
+  const double network_cpu = thread_cpu_seconds() - cpu_start;
+  trace.commit();
+
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  const double sim_s = static_cast<double>(scenario.step_count()) * scenario.step_s;
+  const nlohmann::ordered_json report = simulator.report();
+  nlohmann::ordered_json& s = outcome.summary;
+  s["scenario"] = scenario.name;
+  s["replay_of"] = {{"scenario", inputs.scenario.string()},
+                    {"positions", inputs.positions.string()},
+                    {"traffic", inputs.traffic.string()}};
+  s["seed"] = scenario.seed;
+  s["robots"] = scenario.robots.count;
+  s["sim_time_s"] = sim_s;
+  s["step_s"] = scenario.step_s;
+  s["steps"] = scenario.step_count();
+  s["wall_s"] = wall_s;
+  s["cpu_s"] = {{"network", network_cpu}};
+  s["realtime_factor"] = wall_s > 0 ? sim_s / wall_s : 0.0;
+  for (const char* key : {"packets", "pdr", "delay_s", "hops_mean", "mac", "routing", "events"}) {
+    if (report.contains(key)) s[key] = report[key];
+  }
+  s["outputs"] = {{"summary", kSummaryFile}, {"packet_trace", kPacketTraceFile}};
+  write_file_atomically(out_dir / kSummaryFile, s.dump(2) + "\n");
+  return outcome;
+}
+
+}  // namespace swarmnet

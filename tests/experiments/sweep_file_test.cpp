@@ -1,0 +1,93 @@
+// Sweep files: checking with file:line:column, expansion order, run ids, results.csv columns.
+#include "sweep_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "command_runner.hpp"
+#include "sweep_results.hpp"
+
+namespace swarmnet {
+namespace {
+
+using swarmnet::testing::TempDir;
+
+std::filesystem::path write(const TempDir& dir, const std::string& name, const std::string& text) {
+  auto path = dir.path() / name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(SweepFile, ExpandsTheGridTimesSeedsInStableOrder) {
+  TempDir dir;
+  write(dir, "base.yaml", "name: x\n");
+  const auto file = write(dir, "s.yaml",
+                          "base: base.yaml\n"
+                          "set:\n  duration_s: 5\n"
+                          "grid:\n"
+                          "  robots.count: [10, 20]\n"
+                          "  network.routing: [{plugin: flooding}, {plugin: aodv}]\n"
+                          "seeds: {first: 3, count: 2}\n");
+  const SweepSpec spec = load_sweep(file);
+  EXPECT_EQ(spec.base, (dir.path() / "base.yaml").lexically_normal());
+  ASSERT_EQ(spec.axes.size(), 2U);
+  EXPECT_EQ(spec.axes[1].name, "routing");
+  const auto runs = spec.expand();
+  ASSERT_EQ(runs.size(), 8U);
+  EXPECT_EQ(runs[0].id, "count-10_routing-flooding_seed-3");
+  EXPECT_EQ(runs[1].id, "count-10_routing-flooding_seed-4");
+  EXPECT_EQ(runs[2].id, "count-10_routing-aodv_seed-3");
+  EXPECT_EQ(runs[7].id, "count-20_routing-aodv_seed-4");
+  EXPECT_EQ(runs[7].seed, 4U);
+  const std::vector<std::string> set = {"duration_s=5", "robots.count=20",
+                                        "network.routing={plugin: aodv}"};
+  EXPECT_EQ(runs[7].set, set);
+}
+
+TEST(SweepFile, ReportsEveryProblemWithItsLine) {
+  TempDir dir;
+  const auto file = write(dir, "bad.yaml",
+                          "base: missing.yaml\n"
+                          "grdi: {}\n"
+                          "grid:\n"
+                          "  robots.count: 10\n"
+                          "  a..b: [1]\n"
+                          "seeds: [1, x, 1]\n");
+  try {
+    (void)load_sweep(file);
+    FAIL() << "accepted a bad sweep file";
+  } catch (const SweepError& error) {
+    const std::string text = error.what();
+    const std::string name = file.string();
+    EXPECT_NE(text.find(name + ":1:7: base: no such file"), std::string::npos) << text;
+    EXPECT_NE(text.find(name + ":2:1: grdi: unknown key"), std::string::npos) << text;
+    EXPECT_NE(text.find(name + ":4:17: grid.robots.count: not a non-empty list"), std::string::npos)
+        << text;
+    EXPECT_NE(text.find(name + ":5:3: grid.a..b: not a key path"), std::string::npos) << text;
+    EXPECT_NE(text.find(name + ":6:12: seeds: not a seed"), std::string::npos) << text;
+    EXPECT_NE(text.find(name + ":6:15: seeds: repeated seed"), std::string::npos) << text;
+  }
+}
+
+TEST(SweepResults, FlattensSummariesIntoStableColumns) {
+  TempDir dir;
+  write(dir, "base.yaml", "name: x\n");
+  const auto file = write(dir, "s.yaml", "base: base.yaml\ngrid:\n  robots.count: [1, 2]\n");
+  const SweepSpec spec = load_sweep(file);
+  const auto runs = spec.expand();
+  write(dir, "a.json",
+        R"({"seed": 1, "pdr": 0.5, "delay_s": {"mean": 0.25, "p95": null}, "name": "a,b"})");
+  write(dir, "b.json", R"({"seed": 1, "pdr": 1, "extra": [1, 2]})");
+  const std::vector<SweepRunResult> results = {{&runs[0], "ok", dir.path() / "a.json"},
+                                               {&runs[1], "failed", dir.path() / "none.json"},
+                                               {&runs[1], "ok", dir.path() / "b.json"}};
+  EXPECT_EQ(results_csv(spec, results),
+            "run_id,seed,status,robots.count,pdr,delay_s.mean,delay_s.p95,name,extra\n"
+            "count-1_seed-1,1,ok,1,0.5,0.25,,\"a,b\",\n"
+            "count-2_seed-1,1,failed,2,,,,,\n"
+            "count-2_seed-1,1,ok,2,1,,,,\"[1,2]\"\n");
+}
+
+}  // namespace
+}  // namespace swarmnet
