@@ -118,6 +118,20 @@ TEST(DcfChannelAccess, ZeroBackoffAfterDifsGrantsAtOnce) {
   EXPECT_TRUE(access.idle_for_ifs(us(100)));
 }
 
+TEST(DcfChannelAccess, DeferUntilHoldsAccessWithoutBackoff) {
+  ChannelAccess access(timing_80211a());
+  access.set_backoff(kTimeZero, 0);
+  // Idle for long: a packet arriving at 500 us goes at 534 us (ns-3's backoff start now + DIFS).
+  access.defer_until(us(500 + 34));
+  EXPECT_EQ(access.backoff_slots(us(500)), 0U);
+  EXPECT_EQ(access.grant_time(us(500)), us(534));
+  // A busy period in between pushes it to DIFS after the busy period.
+  access.medium_busy(us(510));
+  EXPECT_EQ(access.grant_time(us(510)), kTimeNever);
+  access.medium_idle(us(600));
+  EXPECT_EQ(access.grant_time(us(600)), us(634));
+}
+
 TEST(DcfInterfaceQueue, BoundedFifoWithExpiry) {
   InterfaceQueue queue(2, us(1000));
   Packet a;

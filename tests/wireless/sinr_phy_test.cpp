@@ -98,6 +98,18 @@ TEST(WirelessSinrPhy, AFrameIsLostToInterferenceItWouldSurviveAlone) {
   EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "collision 1", "rx_error", "idle"}));
 }
 
+TEST(WirelessSinrPhy, AFrameLostInItsHeaderIsNoReceptionError) {
+  // ns-3.37: only a payload failure is a reception error (the MAC's EIFS); interference that
+  // destroys the PLCP header (16-20 us after the frame's start) leaves just a busy medium.
+  Scheduler scheduler;
+  RecordingListener listener;
+  Phy phy(sinr_config(), listener, &scheduler, 1);
+  arrive(scheduler, phy, 1, -75.0, us(10));
+  arrive(scheduler, phy, 2, -70.0, us(10) + us(17));  // after the detection window, in the header
+  scheduler.run_until(us(10000));
+  EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "collision 1", "idle"}));
+}
+
 TEST(WirelessSinrPhy, WeakInterferenceIsTolerated) {
   Scheduler scheduler;
   RecordingListener listener;
@@ -140,6 +152,27 @@ TEST(WirelessSinrPhy, BelowTheDetectionThresholdNothingIsReceivedOrSensed) {
   EXPECT_EQ(phy.state(), Phy::State::idle);
   scheduler.run_until(us(5000));
   EXPECT_TRUE(listener.log.empty());
+}
+
+TEST(WirelessSinrPhy, CarrierSenseUsesTheSumOfTheSignalsAfterTheDetectionWindow) {
+  // ns-3.37: CCA is busy while the aggregate of all signals reaches the CCA threshold (-82 dBm),
+  // and a new signal is sensed only at the end of its 4 us preamble-detection window.
+  Scheduler scheduler;
+  RecordingListener listener;
+  Phy phy(sinr_config(), listener, &scheduler, 1);
+  arrive(scheduler, phy, 1, -84.0, us(10));   // alone: below the threshold, not detected
+  arrive(scheduler, phy, 2, -84.0, us(100));  // together: -81 dBm
+  scheduler.run_until(us(50));
+  EXPECT_FALSE(phy.medium_busy());
+  scheduler.run_until(us(102));
+  EXPECT_FALSE(phy.medium_busy());  // signal 2 is still in its detection window
+  scheduler.run_until(us(105));
+  EXPECT_TRUE(phy.medium_busy());
+  EXPECT_EQ(phy.state(), Phy::State::busy);
+  scheduler.run_until(us(10) + kFrameTime + us(1));  // signal 1 ended: -84 dBm left
+  EXPECT_FALSE(phy.medium_busy());
+  scheduler.run_until(us(10000));
+  EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "idle"}));
 }
 
 TEST(WirelessSinrPhy, EnergyDetectionMakesTheMediumBusyWithoutAFrame) {

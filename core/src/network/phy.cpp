@@ -52,7 +52,8 @@ Phy::Phy(const PhyConfig& config, PhyListener& listener, Scheduler* scheduler, s
       seed_(seed),
       noise_mw_(dbm_to_milliwatts(noise_floor_dbm(config))),
       audible_dbm_(audibility_threshold_dbm(config)),
-      energy_detection_mw_(dbm_to_milliwatts(config.energy_detection_dbm)) {
+      energy_detection_mw_(dbm_to_milliwatts(config.energy_detection_dbm)),
+      cca_threshold_mw_(dbm_to_milliwatts(config.cca_threshold_dbm)) {
   if (sinr_model() && scheduler_ == nullptr) {
     throw std::logic_error("PHY: the sinr model needs a scheduler");
   }
@@ -75,10 +76,16 @@ bool Phy::medium_busy() const {
   if (transmitting_) return true;
   if (!sinr_model()) return !arrivals_.empty();
   if (lock_) return true;
-  const bool strong_frame = std::any_of(arrivals_.begin(), arrivals_.end(), [&](const Arrival& a) {
-    return a.rx_power_dbm >= config_.cca_threshold_dbm;
-  });
-  return strong_frame || (!arrivals_.empty() && total_mw() >= energy_detection_mw_);
+  // ns-3.37 (PhyEntity::SwitchMaybeToCcaBusy): once a preamble is dropped or not detected, CCA is
+  // busy while the sum of all arriving signals reaches the CCA threshold; a signal still in its
+  // 4 us preamble-detection window is not sensed yet (the "4 us CCA window").
+  double sensed_mw = 0.0;
+  for (const Arrival& a : arrivals_) {
+    if (std::find(candidates_.begin(), candidates_.end(), a.frame_uid) == candidates_.end()) {
+      sensed_mw += a.rx_power_mw;
+    }
+  }
+  return sensed_mw > 0.0 && (sensed_mw >= cca_threshold_mw_ || sensed_mw >= energy_detection_mw_);
 }
 
 bool Phy::audible(double rx_power_dbm) const { return rx_power_dbm >= audible_dbm_; }
@@ -140,6 +147,12 @@ void Phy::end_detection_window() {
   std::vector<std::uint64_t> candidates;
   candidates.swap(candidates_);
   if (transmitting_ || lock_) return;
+  detect_preamble(candidates);
+  // Detected (locked) or not, the window's signals are sensed from now on.
+  report_busy_change();
+}
+
+void Phy::detect_preamble(const std::vector<std::uint64_t>& candidates) {
   const Arrival* best = nullptr;
   for (const std::uint64_t uid : candidates) {
     const auto it = std::find_if(arrivals_.begin(), arrivals_.end(),
@@ -153,7 +166,6 @@ void Phy::end_detection_window() {
   if (sinr_db < config_.preamble_snr_db) return;
   lock_ = Lock{best->frame_uid, best->rx_power_mw, best->start, {}};
   lock_->interference_mw.emplace_back(scheduler_->now(), std::max(interference, 0.0));
-  report_busy_change();
 }
 
 void Phy::note_interference_change() {
@@ -224,7 +236,8 @@ void Phy::finish_lock(const Frame& frame, double rx_power_dbm) {
   const SimTime now = scheduler_->now();
   const double p_success = success_probability(lock, frame, now, true);
   RandomStream draw(derive_seed(seed_, {frame.uid}));
-  const bool received = draw.uniform() < p_success;
+  const double draw_value = draw.uniform();
+  const bool received = draw_value < p_success;
   // SINR reported to the MAC: over the worst chunk.
   double worst_interference = 0.0;
   for (const auto& chunk : lock.interference_mw) {
@@ -240,6 +253,12 @@ void Phy::finish_lock(const Frame& frame, double rx_power_dbm) {
       success_probability(lock, frame, now, false) >= kCollisionAloneSuccess) {
     listener_.phy_collision(frame);
   }
+  // ns-3.37 reports a reception error (RxEndError, after which the MAC uses EIFS) only when the
+  // payload fails; a failed PLCP header aborts the reception during its CCA-busy phase, and the
+  // MAC sees a busy medium only. The same draw decides: the header failed if it exceeds the
+  // header's own success probability (which bounds the frame's).
+  const SimTime header_end = lock.start + ofdm::kPreambleDuration + ofdm::kHeaderDuration;
+  if (draw_value >= success_probability(lock, frame, std::min(header_end, now), true)) return;
   listener_.phy_receive_error();
 }
 

@@ -25,13 +25,18 @@
 //     frame is received with probability prod over chunks of chunk_success_rate, drawn from a
 //     stream derived from (node seed, frame uid). A rate that is not an 802.11a rate is read as
 //     the fastest 802.11a rate below it.
+//   - Errors: the listener's receive-error callback (the MAC's EIFS) follows only a frame whose
+//     PLCP header was received and whose payload failed, as ns-3.37's RxEndError; a frame lost
+//     in its header leaves only a busy medium.
 //   - Collisions: a lost locked frame addressed to this node (or broadcast) whose success
 //     probability without interference would have been at least 0.9 counts as a collision
 //     (listener->phy_collision; the node counts those addressed to it or broadcast as
 //     mac.collisions).
-//   - Carrier sense: medium_busy() while transmitting, while locked on a frame, while any
-//     arriving signal alone reaches cca_threshold_dbm, or while the total arriving power reaches
-//     energy_detection_dbm (-62 dBm, CCA-ED).
+//   - Carrier sense: medium_busy() while transmitting, while locked on a frame, or while the
+//     total power of the arriving signals reaches cca_threshold_dbm (ns-3.37's CCA sensitivity:
+//     the aggregate, not a single frame, as PhyEntity::SwitchMaybeToCcaBusy) or
+//     energy_detection_dbm (-62 dBm, CCA-ED). A signal still in its 4 us preamble-detection
+//     window does not count yet (ns-3 reports CCA busy only at the window's end).
 //
 // Both models: medium_busy/medium_idle callbacks report the transitions of medium_busy() caused
 // by arriving signals; the start and end of the node's own transmission are reported by
@@ -121,6 +126,7 @@ class Phy {
   [[nodiscard]] double total_mw() const;
   void report_busy_change();
   void end_detection_window();
+  void detect_preamble(const std::vector<std::uint64_t>& candidates);
   void note_interference_change();
   void finish_lock(const Frame& frame, double rx_power_dbm);
   [[nodiscard]] double success_probability(const Lock& lock, const Frame& frame, SimTime end,
@@ -133,6 +139,7 @@ class Phy {
   double noise_mw_;
   double audible_dbm_;
   double energy_detection_mw_;
+  double cca_threshold_mw_;
   bool transmitting_ = false;
   bool reported_busy_ = false;
   std::vector<Arrival> arrivals_;  // signals currently arriving, in arrival order

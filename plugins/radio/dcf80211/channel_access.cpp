@@ -55,6 +55,11 @@ void ChannelAccess::set_backoff(SimTime now, std::uint32_t slots) {
   counted_to_ = now;
 }
 
+void ChannelAccess::defer_until(SimTime start) {
+  slots_ = 0;
+  counted_to_ = start;
+}
+
 std::uint32_t ChannelAccess::backoff_slots(SimTime now) const {
   ChannelAccess copy = *this;
   copy.update(now);

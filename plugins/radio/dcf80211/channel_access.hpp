@@ -31,6 +31,9 @@ class ChannelAccess {
   void busy_until(SimTime now);
   // A new backoff of `slots` slots, counted from now.
   void set_backoff(SimTime now, std::uint32_t slots);
+  // No backoff, and no access before `start` (ns-3: the backoff start moved to now + DIFS when a
+  // packet arrives at an idle medium).
+  void defer_until(SimTime start);
 
   // Slots still to count, as of `now`.
   [[nodiscard]] std::uint32_t backoff_slots(SimTime now) const;

@@ -16,9 +16,11 @@ PluginInfo Dcf80211::info() {
       "Timing: slot 9 us, SIFS 16 us, DIFS = SIFS + 2 slots (34 us), EIFS = SIFS + ACK at the "
       "control rate + DIFS (94 us at 6 Mbit/s). Frame durations: 16 us preamble + 4 us PLCP "
       "header + 4 us symbols carrying 16 + 8 * bytes + 6 bits.\n"
-      "Access: a packet arriving at an idle station whose medium has been idle for DIFS (EIFS "
-      "after a failed reception) and whose backoff is 0 is sent at once; otherwise the station "
-      "backs off a uniform number of slots in [0, CW], counted only in idle slots after DIFS/"
+      "Access (as ns-3.37's ChannelAccessManager): a packet arriving at an idle station whose "
+      "backoff is 0 while the medium is idle is sent once the medium has stayed idle for DIFS "
+      "from its arrival (and for DIFS, EIFS after a failed reception, from the last busy "
+      "period); if the medium is busy at its arrival the station backs off a uniform number of "
+      "slots in [0, CW], counted only in idle slots after DIFS/"
       "EIFS and frozen while the medium is busy (physically, or virtually by the NAV from other "
       "stations' duration fields). CW starts at cw_min, becomes 2 (CW + 1) - 1 up to cw_max after "
       "each failure and is reset after a success or a drop; a new backoff is drawn after every "
@@ -103,10 +105,16 @@ void Dcf80211::start_exchange_if_needed(bool fresh_arrival) {
   const std::uint32_t mpdu_bytes = header_bytes_ + item->packet.size_bytes();
   const bool use_rts = item->next_hop != kBroadcast && mpdu_bytes > rts_threshold_bytes_;
   exchange_ = Exchange{std::move(item->packet), item->next_hop, next_sequence_++, use_rts};
-  // 802.11-2016 10.3.4.2: send at once only if the medium has been idle for DIFS/EIFS and the
-  // backoff is 0; otherwise back off.
-  if (fresh_arrival && access_.backoff_slots(now()) == 0 && !access_.idle_for_ifs(now())) {
-    new_backoff();
+  // 802.11-2016 10.3.4.2 as ns-3.37 applies it (ChannelAccessManager::NeedBackoffUponAccess):
+  // a packet reaching an idle station whose backoff is 0 is sent without backoff if the medium
+  // (physical or NAV) is idle now, after it stays idle for DIFS from now (and DIFS/EIFS after
+  // the last busy period); if the medium is busy now, the station backs off.
+  if (fresh_arrival && access_.backoff_slots(now()) == 0) {
+    if (access_.busy() || access_.nav_end() > now()) {
+      new_backoff();
+    } else {
+      access_.defer_until(now() + timing_.difs);
+    }
   }
   access_requested_ = true;
   schedule_access();
