@@ -35,15 +35,6 @@ void Node::phy_collision(const Frame& frame) {
 
 // ---- MacPort ----------------------------------------------------------------------------------
 
-std::size_t Node::MacPort::node_count() const { return node_.services_.channel.node_count(); }
-SimTime Node::MacPort::now() const { return node_.services_.scheduler.now(); }
-Vec2 Node::MacPort::position() const { return node_.services_.channel.position(node_.id_); }
-
-TimerId Node::MacPort::schedule(SimTime delay, std::function<void()> callback) {
-  return node_.services_.scheduler.schedule_in(delay, std::move(callback));
-}
-void Node::MacPort::cancel(TimerId timer) { node_.services_.scheduler.cancel(timer); }
-
 void Node::MacPort::count(std::string_view counter, std::uint64_t amount) {
   node_.services_.metrics.mac_count(counter, amount);
 }
@@ -67,15 +58,6 @@ void Node::MacPort::link_failed(const Packet& packet, NodeId next_hop) {
 void Node::MacPort::drop(const Packet& packet, DropReason reason) { node_.drop(packet, reason); }
 
 // ---- RoutingPort ------------------------------------------------------------------------------
-
-std::size_t Node::RoutingPort::node_count() const { return node_.services_.channel.node_count(); }
-SimTime Node::RoutingPort::now() const { return node_.services_.scheduler.now(); }
-Vec2 Node::RoutingPort::position() const { return node_.services_.channel.position(node_.id_); }
-
-TimerId Node::RoutingPort::schedule(SimTime delay, std::function<void()> callback) {
-  return node_.services_.scheduler.schedule_in(delay, std::move(callback));
-}
-void Node::RoutingPort::cancel(TimerId timer) { node_.services_.scheduler.cancel(timer); }
 
 void Node::RoutingPort::count(std::string_view counter, std::uint64_t amount) {
   node_.services_.metrics.routing_count(counter, amount);

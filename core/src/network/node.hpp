@@ -12,7 +12,9 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string_view>
+#include <utility>
 
 #include "network/application_layer.hpp"
 #include "network/channel.hpp"
@@ -58,44 +60,48 @@ class Node final : private PhyListener {
   [[nodiscard]] Routing& routing() { return *routing_; }
 
  private:
-  class MacPort final : public MacContext {
+  // What both ports give their plugin alike: the node's identity, the clock and timers.
+  template <typename Context>
+  class Port : public Context {
    public:
-    explicit MacPort(Node& node) : node_(node) {}
-    [[nodiscard]] NodeId node() const override { return node_.id_; }
-    [[nodiscard]] std::size_t node_count() const override;
-    [[nodiscard]] SimTime now() const override;
-    [[nodiscard]] Vec2 position() const override;
-    TimerId schedule(SimTime delay, std::function<void()> callback) override;
-    void cancel(TimerId timer) override;
+    explicit Port(Node& node) : node_(node) {}
+    [[nodiscard]] NodeId node() const final { return node_.id_; }
+    [[nodiscard]] std::size_t node_count() const final {
+      return node_.services_.channel.node_count();
+    }
+    [[nodiscard]] SimTime now() const final { return node_.services_.scheduler.now(); }
+    [[nodiscard]] Vec2 position() const final {
+      return node_.services_.channel.position(node_.id_);
+    }
+    TimerId schedule(SimTime delay, std::function<void()> callback) final {
+      return node_.services_.scheduler.schedule_in(delay, std::move(callback));
+    }
+    void cancel(TimerId timer) final { node_.services_.scheduler.cancel(timer); }
+
+   protected:
+    Node& node_;
+  };
+
+  class MacPort final : public Port<MacContext> {
+   public:
+    using Port::Port;
     void count(std::string_view counter, std::uint64_t amount) override;
     void transmit(Frame frame, SimTime duration) override;
     [[nodiscard]] bool medium_busy() const override;
     void deliver(Packet packet, NodeId from) override;
     void link_failed(const Packet& packet, NodeId next_hop) override;
     void drop(const Packet& packet, DropReason reason) override;
-
-   private:
-    Node& node_;
   };
 
-  class RoutingPort final : public RoutingContext {
+  class RoutingPort final : public Port<RoutingContext> {
    public:
-    explicit RoutingPort(Node& node) : node_(node) {}
-    [[nodiscard]] NodeId node() const override { return node_.id_; }
-    [[nodiscard]] std::size_t node_count() const override;
-    [[nodiscard]] SimTime now() const override;
-    [[nodiscard]] Vec2 position() const override;
-    TimerId schedule(SimTime delay, std::function<void()> callback) override;
-    void cancel(TimerId timer) override;
+    using Port::Port;
     void count(std::string_view counter, std::uint64_t amount) override;
     Packet make_control_packet(NodeId destination) override;
     void send_to_mac(Packet packet, NodeId next_hop) override;
     void deliver(const Packet& packet) override;
     void drop(const Packet& packet, DropReason reason) override;
     void trace_forward(const Packet& packet) override;
-
-   private:
-    Node& node_;
   };
 
   void drop(const Packet& packet, DropReason reason);
