@@ -10,18 +10,13 @@
 #include <sstream>
 
 #include "stats/sample_statistics.hpp"
+#include "text_join.hpp"
 
 namespace swarmnet {
 
 namespace {
 
 constexpr int kBadInput = 2;
-
-std::string join(const std::vector<std::string>& parts, const std::string& separator) {
-  std::string text;
-  for (std::size_t i = 0; i < parts.size(); ++i) text += (i ? separator : "") + parts[i];
-  return text;
-}
 
 std::string number(double value, int precision = 6) {
   if (std::isnan(value)) return "-";

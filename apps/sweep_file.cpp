@@ -6,15 +6,11 @@
 #include <map>
 #include <set>
 
+#include "text_join.hpp"
+
 namespace swarmnet {
 
 namespace {
-
-std::string join_lines(const std::vector<std::string>& lines) {
-  std::string text;
-  for (const auto& line : lines) text += (text.empty() ? "" : "\n") + line;
-  return text;
-}
 
 class Problems {
  public:
@@ -110,7 +106,7 @@ constexpr const char* kForm =
 }  // namespace
 
 SweepError::SweepError(std::vector<std::string> problems)
-    : std::runtime_error(join_lines(problems)), problems_(std::move(problems)) {}
+    : std::runtime_error(join(problems, "\n")), problems_(std::move(problems)) {}
 
 SweepSpec load_sweep(const std::filesystem::path& file) {
   SweepSpec spec;

@@ -89,17 +89,18 @@ IoStatus SocketTransport::flush() {
 
 // Makes at least `bytes` unread bytes available in in_.
 IoStatus SocketTransport::fill(std::size_t bytes) {
-  if (in_start_ > 0 && in_start_ == in_.size()) {
-    in_.clear();
-    in_start_ = 0;
-  }
-  while (in_.size() - in_start_ < bytes) {
+  if (in_.size() - in_start_ >= bytes) return IoStatus::ok;
+  // More is needed: drop what was read first. What remains is at most a partial record, so this
+  // is cheap, and the buffer stays at about one record plus one read whatever the run's length.
+  in_.erase(in_.begin(), in_.begin() + static_cast<std::ptrdiff_t>(in_start_));
+  in_start_ = 0;
+  while (in_.size() < bytes) {
     const std::size_t old = in_.size();
-    in_.resize(old + std::max<std::size_t>(bytes, 65536));
+    in_.resize(old + std::max<std::size_t>(bytes - old, 65536));
     const ssize_t n = ::recv(fd_, in_.data() + old, in_.size() - old, 0);
     in_.resize(old + static_cast<std::size_t>(std::max<ssize_t>(n, 0)));
     if (n > 0) continue;
-    if (n == 0) return in_.size() == in_start_ ? IoStatus::closed : IoStatus::corrupt;
+    if (n == 0) return in_.empty() ? IoStatus::closed : IoStatus::corrupt;
     if (errno == EINTR) continue;
     if (errno == EAGAIN || errno == EWOULDBLOCK) {
       if (const IoStatus s = wait_for(POLLIN); s != IoStatus::ok) return s;

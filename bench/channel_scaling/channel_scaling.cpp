@@ -20,21 +20,13 @@
 #include <vector>
 
 #include "network/network_simulator.hpp"
-#include "plugin/param_defaults.hpp"
 #include "plugin/plugin_loader.hpp"
+#include "scenario/default_plugin_choice.hpp"
 #include "swarmnet/random.hpp"
 
 namespace {
 
 using namespace swarmnet;
-
-PluginChoice choose(PluginLoader& loader, const std::string& name, PluginKind kind) {
-  PluginChoice choice;
-  choice.name = name;
-  choice.kind = kind;
-  choice.params = default_params(loader.find(name, kind)->info());
-  return choice;
-}
 
 double cpu_seconds() {
   timespec ts{};
@@ -52,12 +44,13 @@ nlohmann::ordered_json run(PluginLoader& loader, std::uint32_t nodes, double sim
   scenario.arena.width_m = side;
   scenario.arena.height_m = side;
   scenario.robots.count = nodes;
-  scenario.network.propagation = {choose(loader, "log_distance", PluginKind::propagation)};
+  scenario.network.propagation = {
+      default_plugin_choice(loader, "log_distance", PluginKind::propagation)};
   scenario.network.phy.model = PhyModel::sinr;
   scenario.network.phy.tx_power_dbm = -82.0 + 46.6777 + 30.0 * std::log10(120.0);
   scenario.network.channel.cutoff = cutoff;
-  scenario.network.mac = choose(loader, "dcf80211", PluginKind::mac);
-  scenario.network.routing = choose(loader, "direct", PluginKind::routing);
+  scenario.network.mac = default_plugin_choice(loader, "dcf80211", PluginKind::mac);
+  scenario.network.routing = default_plugin_choice(loader, "direct", PluginKind::routing);
 
   RandomStream random(derive_seed(42, {nodes}));
   std::vector<Vec2> positions;

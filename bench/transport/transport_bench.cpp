@@ -166,11 +166,14 @@ void Throughput(benchmark::State& state, Kind kind, bool flush_each) {
   std::vector<std::byte> record(payload, std::byte{0x42});
   const std::vector<std::byte> ack{kAckRequest};
   std::vector<std::byte> reply;
+  bool failed = false;
   for (auto _ : state) {
-    for (int i = 0; i < kBatch; ++i) {
-      if (t.send(record) != IoStatus::ok || (flush_each && t.flush() != IoStatus::ok)) {
-        state.SkipWithError("send failed");
-      }
+    for (int i = 0; i < kBatch && !failed; ++i) {
+      failed = t.send(record) != IoStatus::ok || (flush_each && t.flush() != IoStatus::ok);
+    }
+    if (failed) {
+      state.SkipWithError("send failed");
+      break;
     }
     // The batch counts once the peer has read all of it: ask it to acknowledge.
     if (t.send(ack) != IoStatus::ok || t.flush() != IoStatus::ok ||

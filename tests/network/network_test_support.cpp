@@ -7,17 +7,13 @@
 
 #include "network/network_simulator.hpp"
 #include "network/packet_trace.hpp"
-#include "plugin/param_defaults.hpp"
+#include "scenario/default_plugin_choice.hpp"
 #include "swarmnet/random.hpp"
 
 namespace swarmnet::test {
 
 PluginChoice choose(PluginLoader& loader, const std::string& name, PluginKind kind) {
-  PluginChoice choice;
-  choice.name = name;
-  choice.kind = kind;
-  choice.params = default_params(loader.find(name, kind)->info());
-  return choice;
+  return default_plugin_choice(loader, name, kind);
 }
 
 void set_param(PluginChoice& choice, const std::string& name, ParamValue value) {

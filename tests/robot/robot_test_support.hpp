@@ -11,9 +11,9 @@
 #include <utility>
 #include <vector>
 
-#include "plugin/param_defaults.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "robot/controller_metrics.hpp"
+#include "scenario/default_plugin_choice.hpp"
 #include "scenario/scenario.hpp"
 #include "swarmnet/controller.hpp"
 #include "swarmnet/physics.hpp"
@@ -24,10 +24,7 @@ using Overrides = std::map<std::string, ParamValue>;
 
 inline PluginChoice make_choice(PluginLoader& loader, const std::string& name, PluginKind kind,
                                 const Overrides& overrides = {}) {
-  PluginChoice choice;
-  choice.name = name;
-  choice.kind = kind;
-  choice.params = default_params(loader.find(name, kind)->info());
+  PluginChoice choice = default_plugin_choice(loader, name, kind);
   for (const auto& [key, value] : overrides) {
     if (!choice.params.contains(key)) throw std::logic_error("test sets undeclared " + key);
     choice.params.set(key, value);
@@ -113,9 +110,7 @@ class FakeRobotContext final : public RobotContext {
     return sent.size() - 1;
   }
   void record(std::string_view metric, double value) override {
-    auto it = metrics.find(metric);
-    if (it == metrics.end()) it = metrics.emplace(std::string(metric), MetricSummary{}).first;
-    it->second.add(value);
+    record_metric(metrics, metric, value);
   }
 
   void clear_rays() { std::fill(rays.begin(), rays.end(), range_m); }

@@ -14,6 +14,8 @@ struct Rect {
   double x_max_m = 0.0;
   double y_max_m = 0.0;
 
+  bool operator==(const Rect&) const = default;
+
   [[nodiscard]] double width_m() const { return x_max_m - x_min_m; }
   [[nodiscard]] double height_m() const { return y_max_m - y_min_m; }
   [[nodiscard]] bool contains(const Vec2& p) const {

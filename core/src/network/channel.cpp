@@ -15,11 +15,6 @@ namespace {
 // Grid cells no smaller than this: a tiny cutoff would otherwise make millions of empty cells.
 constexpr double kMinCellM = 1.0;
 
-bool same_rect(const Rect& a, const Rect& b) {
-  return a.x_min_m == b.x_min_m && a.y_min_m == b.y_min_m && a.x_max_m == b.x_max_m &&
-         a.y_max_m == b.y_max_m;
-}
-
 }  // namespace
 
 Channel::Channel(const Scenario& scenario, PropagationChain chain, Scheduler& scheduler,
@@ -59,7 +54,7 @@ void Channel::rebuild_grid() {
     bounds.x_max_m = std::max(bounds.x_max_m, p.x());
     bounds.y_max_m = std::max(bounds.y_max_m, p.y());
   }
-  if (!grid_ready_ || !same_rect(bounds, grid_bounds_)) {
+  if (!grid_ready_ || bounds != grid_bounds_) {
     grid_.reset(bounds, std::max(cutoff_m_, kMinCellM));
     grid_bounds_ = bounds;
     grid_ready_ = true;
@@ -68,7 +63,7 @@ void Channel::rebuild_grid() {
 }
 
 SimTime Channel::propagation_delay(double distance_m) {
-  return SimTime{std::llround(distance_m / kSpeedOfLightMps * 1e9)};
+  return from_seconds(distance_m / kSpeedOfLightMps);
 }
 
 void Channel::transmit(NodeId transmitter, Frame frame, SimTime duration) {

@@ -144,10 +144,12 @@ void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm) {
 }
 
 void Phy::end_detection_window() {
-  std::vector<std::uint64_t> candidates;
-  candidates.swap(candidates_);
+  // Swapped into a second member rather than a local: both buffers keep their capacity, so a
+  // window allocates nothing, and signals starting during detection go to a fresh candidates_.
+  window_.clear();
+  window_.swap(candidates_);
   if (transmitting_ || lock_) return;
-  detect_preamble(candidates);
+  detect_preamble(window_);
   // Detected (locked) or not, the window's signals are sensed from now on.
   report_busy_change();
 }

@@ -146,6 +146,7 @@ class Phy {
   // sinr state
   TimerId detection_timer_ = kNoTimer;
   std::vector<std::uint64_t> candidates_;  // frames whose preamble started in the window
+  std::vector<std::uint64_t> window_;      // the window being judged (see end_detection_window)
   std::optional<Lock> lock_;
 };
 

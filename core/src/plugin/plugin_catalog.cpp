@@ -7,6 +7,8 @@
 #include <system_error>
 #include <vector>
 
+#include "text_join.hpp"
+
 namespace swarmnet {
 
 namespace {
@@ -39,15 +41,6 @@ class TextTable {
 };
 
 std::string or_dash(const std::string& text) { return text.empty() ? "-" : text; }
-
-std::string join(const std::vector<std::string>& items, const char* separator) {
-  std::string text;
-  for (const auto& item : items) {
-    if (!text.empty()) text += separator;
-    text += item;
-  }
-  return text;
-}
 
 // Integer parameters store their bounds as doubles; the int64 extremes mean "no bound".
 constexpr double kIntegerLimit = 9.2e18;

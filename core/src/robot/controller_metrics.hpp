@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <string_view>
 
 namespace swarmnet {
 
@@ -28,5 +29,12 @@ struct MetricSummary {
 // Keyed by metric name, in name order (deterministic output); looked up by string_view without
 // allocating.
 using ControllerMetrics = std::map<std::string, MetricSummary, std::less<>>;
+
+// Adds one observation of `metric`, creating its summary on first use.
+inline void record_metric(ControllerMetrics& metrics, std::string_view metric, double value) {
+  auto it = metrics.find(metric);
+  if (it == metrics.end()) it = metrics.emplace(std::string(metric), MetricSummary{}).first;
+  it->second.add(value);
+}
 
 }  // namespace swarmnet

@@ -50,10 +50,7 @@ std::uint64_t WorldRobotContext::send(RobotId destination, std::span<const std::
 }
 
 void WorldRobotContext::record(std::string_view metric, double value) {
-  auto it = state_->metrics.find(metric);
-  if (it == state_->metrics.end())
-    it = state_->metrics.emplace(std::string(metric), MetricSummary{}).first;
-  it->second.add(value);
+  record_metric(state_->metrics, metric, value);
 }
 
 }  // namespace swarmnet

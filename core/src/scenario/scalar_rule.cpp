@@ -7,6 +7,7 @@
 
 #include "plugin/plugin_catalog.hpp"
 #include "scenario/nearest_name.hpp"
+#include "text_join.hpp"
 
 namespace swarmnet {
 
@@ -18,15 +19,6 @@ constexpr double kIntegerLimit = 9.2e18;
 std::string format_bound(const ScalarRule& rule, double value) {
   if (rule.type == ScalarType::integer) return std::to_string(static_cast<std::int64_t>(value));
   return format_real(value);
-}
-
-std::string join(const std::vector<std::string>& items) {
-  std::string text;
-  for (const auto& item : items) {
-    if (!text.empty()) text += ", ";
-    text += item;
-  }
-  return text;
 }
 
 bool is_digits(std::string_view text) {
@@ -78,7 +70,7 @@ std::string ScalarRule::describe() const {
     case ScalarType::name:
       return "a name of letters, digits, '_', '-' and '.'";
     case ScalarType::choice:
-      return "one of " + join(choices);
+      return "one of " + join(choices, ", ");
     case ScalarType::real:
       text = "real";
       break;

@@ -5,19 +5,11 @@
 
 #include "scenario/nearest_name.hpp"
 #include "scenario/scalar_rule.hpp"
+#include "text_join.hpp"
 
 namespace swarmnet {
 
 namespace {
-
-std::string join(const std::vector<std::string>& items) {
-  std::string text;
-  for (const auto& item : items) {
-    if (!text.empty()) text += ", ";
-    text += item;
-  }
-  return text;
-}
 
 std::string line_column(const YAML::Mark& mark) {
   return std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
@@ -120,8 +112,9 @@ std::optional<YAML::Node> ScenarioChecker::check_map(const KeySpec& spec, const 
                                                      const Where& where) {
   if (value.IsDefined() && !value.IsNull() && !value.IsMap()) {
     problems_.add(where.path, where.mark, quote_value(value) + " is not a mapping",
-                  spec.form == KeyForm::map ? spec.describe()
-                                            : "a mapping with keys " + join(spec.key_names()));
+                  spec.form == KeyForm::map
+                      ? spec.describe()
+                      : "a mapping with keys " + join(spec.key_names(), ", "));
     return std::nullopt;
   }
   const std::vector<Entry> given = value.IsMap()
@@ -387,7 +380,7 @@ std::vector<ScenarioChecker::Entry> ScenarioChecker::entries(
       std::string what = unknown_what;
       if (const auto near = nearest_name(name, known)) what += " (did you mean '" + *near + "'?)";
       problems_.add(path, key.Mark(), what,
-                    known.empty() ? none_known : "one of " + join(known) + known_hint);
+                    known.empty() ? none_known : "one of " + join(known, ", ") + known_hint);
       continue;
     }
     result.push_back(Entry{name, it->second, Where{path, value_mark(it->second, key.Mark())}});
@@ -402,7 +395,7 @@ std::string ScenarioChecker::available_plugins(PluginKind kind) {
     if (library->kind() == kind) names.push_back(library->info().name);
   }
   if (names.empty()) return "none is in the search path";
-  return join(names) + " (see `swarmnet plugins`)";
+  return join(names, ", ") + " (see `swarmnet plugins`)";
 }
 
 }  // namespace swarmnet

@@ -10,19 +10,11 @@
 #include "scenario/scenario_consistency.hpp"
 #include "scenario/scenario_overrides.hpp"
 #include "scenario/scenario_schema.hpp"
+#include "text_join.hpp"
 
 namespace swarmnet {
 
 namespace {
-
-std::string join_lines(const std::vector<std::string>& lines) {
-  std::string text;
-  for (const auto& line : lines) {
-    if (!text.empty()) text += '\n';
-    text += line;
-  }
-  return text;
-}
 
 std::string read_file(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -214,7 +206,7 @@ Scenario load_text(const std::string& text, const std::string& origin,
 }  // namespace
 
 ScenarioError::ScenarioError(std::vector<std::string> problems)
-    : std::runtime_error(join_lines(problems)), problems_(std::move(problems)) {}
+    : std::runtime_error(join(problems, "\n")), problems_(std::move(problems)) {}
 
 Scenario load_scenario(const std::filesystem::path& file, const ScenarioOverrides& overrides,
                        PluginLoader& loader) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "text_join.hpp"
+
 namespace swarmnet {
 
 namespace {
@@ -33,15 +35,6 @@ std::vector<KeySpec> rect_keys(const std::string& what) {
       real_key("x_max_m", "m", "Right edge of the " + what + "; greater than x_min_m.").need(),
       real_key("y_max_m", "m", "Top edge of the " + what + "; greater than y_min_m.").need(),
   };
-}
-
-std::string join(const std::vector<std::string>& items) {
-  std::string text;
-  for (const auto& item : items) {
-    if (!text.empty()) text += ", ";
-    text += item;
-  }
-  return text;
 }
 
 }  // namespace
@@ -114,10 +107,10 @@ std::string KeySpec::describe() const {
     case KeyForm::directory_list:
       return "a list of directories";
     case KeyForm::map:
-      return "a mapping with keys " + join(key_names());
+      return "a mapping with keys " + join(key_names(), ", ");
     case KeyForm::map_list:
       return std::string(min_items > 0 ? "a non-empty" : "a") + " list of mappings with keys " +
-             join(key_names());
+             join(key_names(), ", ");
     case KeyForm::plugin:
       return "{plugin: NAME, params: {...}} naming a " + kind + " plugin";
     case KeyForm::plugin_list:
