@@ -215,5 +215,41 @@ TEST(NetworkScheduler, ClearDropsEverythingWithoutRunning) {
   EXPECT_EQ(*token, 1);
 }
 
+TEST(NetworkScheduler, ReservedSequencesRunWhereTheyWereReserved) {
+  // Two events reserved first, scheduled last, still run before an event scheduled in between
+  // for the same instant: the key is the reservation, not the call.
+  Scheduler scheduler;
+  std::vector<int> order;
+  const std::uint64_t first = scheduler.reserve_sequences(2);
+  scheduler.schedule_at(ns(10), [&] { order.push_back(3); });
+  scheduler.schedule_reserved(ns(10), first + 1, [&] { order.push_back(2); });
+  scheduler.schedule_reserved(ns(10), first, [&] { order.push_back(1); });
+  scheduler.run_until(ns(11));
+  EXPECT_EQ(order, (std::vector<int>{1, 2, 3}));
+  EXPECT_THROW(scheduler.schedule_reserved(ns(20), first + 5, [] {}), std::logic_error);
+}
+
+TEST(NetworkScheduler, AdvanceIfNextOnlyWhenNothingComesFirst) {
+  Scheduler scheduler;
+  EXPECT_FALSE(scheduler.advance_if_next(ns(0), scheduler.reserve_sequences(1)));  // not running
+  const std::uint64_t early = scheduler.reserve_sequences(1);
+  scheduler.schedule_at(ns(20), [] {});
+  const std::uint64_t late = scheduler.reserve_sequences(2);
+  std::vector<bool> answers;
+  std::vector<SimTime> clocks;
+  scheduler.schedule_at(ns(5), [&] {
+    answers.push_back(scheduler.advance_if_next(ns(20), late));   // after the pending event
+    answers.push_back(scheduler.advance_if_next(ns(20), early));  // before it: runs now
+    clocks.push_back(scheduler.now());
+    answers.push_back(scheduler.advance_if_next(ns(10), late + 1));  // the clock never goes back
+    answers.push_back(scheduler.advance_if_next(ns(60), late + 1));  // beyond the run's end
+  });
+  const std::uint64_t events_before = scheduler.events_run();
+  EXPECT_EQ(scheduler.run_until(ns(50)), 3U);  // the 5 ns event, the advanced one, the 20 ns one
+  EXPECT_EQ(scheduler.events_run() - events_before, 3U);
+  EXPECT_EQ(answers, (std::vector<bool>{false, true, false, false}));
+  EXPECT_EQ(clocks, (std::vector<SimTime>{ns(20)}));
+}
+
 }  // namespace
 }  // namespace swarmnet

@@ -275,7 +275,7 @@ TEST(ScenarioLoader, LoadsResolvedTextAsTheNetworkHalfReceivesIt) {
   EXPECT_EQ(resolved_yaml(received), text);
   EXPECT_EQ(received.source, fs::path("the robot half's scenario"));
   // The routing key's line in the resolved text (every key written, network.phy's included).
-  EXPECT_EQ(received.network.routing.where.text, "the robot half's scenario:72:13");
+  EXPECT_EQ(received.network.routing.where.text, "the robot half's scenario:73:13");
 
   try {
     load_scenario_text("name: x\nduration_s: -1\n", "the robot half's scenario", loader);

@@ -2,12 +2,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "network/channel.hpp"
 #include "network/nist_error_rate.hpp"
 #include "network/phy.hpp"
+#include "network/propagation_chain.hpp"
 #include "network/scheduler.hpp"
+#include "network_test_support.hpp"
 
 namespace swarmnet {
 namespace {
@@ -200,6 +204,131 @@ TEST(WirelessSinrPhy, HigherRatesNeedMoreSinr) {
   scheduler.run_until(us(10000));
   EXPECT_EQ(listener.log,
             (std::vector<std::string>{"busy", "idle", "rx_error", "busy", "idle", "rx 2"}));
+}
+
+// Quiet signals as a channel would report them: a fixed list, filtered by overlap.
+class FixedQuietSignals final : public QuietSignalSource {
+ public:
+  void quiet_signals(NodeId /*receiver*/, SimTime from, SimTime to,
+                     std::vector<QuietSignal>& out) const override {
+    for (const QuietSignal& signal : signals) {
+      if (signal.start < to && signal.end > from) out.push_back(signal);
+    }
+  }
+  std::vector<QuietSignal> signals;
+};
+
+TEST(WirelessSinrPhy, QuietSignalsCountInTheSinr) {
+  Scheduler scheduler;
+  RecordingListener listener;
+  Phy phy(sinr_config(), listener, &scheduler, 1);
+  FixedQuietSignals quiet;
+  quiet.signals.push_back({us(300), us(300) + kFrameTime, dbm_to_milliwatts(-93.0)});
+  phy.set_quiet_signal_source(&quiet, 0);
+  arrive(scheduler, phy, 1, -75.0, us(10));
+  scheduler.run_until(us(5000));
+  EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "idle", "rx 1"}));
+  const double noise_mw = dbm_to_milliwatts(noise_floor_dbm(sinr_config()));
+  const double expected_db =
+      10.0 * std::log10(dbm_to_milliwatts(-75.0) / (noise_mw + dbm_to_milliwatts(-93.0)));
+  EXPECT_NEAR(listener.last_sinr_db, expected_db, 1e-9);
+}
+
+TEST(WirelessSinrPhy, QuietSignalsDrownAFrameWithoutBeingSensed) {
+  // Sixteen quiet signals of -92.5 dBm (each below the -92 dBm sensing threshold) add up to
+  // -80.5 dBm: enough to destroy a -79 dBm frame. Carrier sense leaves them out (the documented
+  // approximation), so the medium goes idle when the frame ends.
+  Scheduler scheduler;
+  RecordingListener listener;
+  Phy phy(sinr_config(), listener, &scheduler, 1);
+  FixedQuietSignals quiet;
+  for (int i = 0; i < 16; ++i) {
+    quiet.signals.push_back({us(400), us(400) + 2 * kFrameTime, dbm_to_milliwatts(-92.5)});
+  }
+  phy.set_quiet_signal_source(&quiet, 0);
+  arrive(scheduler, phy, 1, -79.0, us(10));
+  scheduler.run_until(us(10) + kFrameTime + us(1));
+  EXPECT_FALSE(phy.medium_busy());
+  scheduler.run_until(us(10000));
+  EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "idle", "collision 1", "rx_error"}));
+}
+
+TEST(WirelessSinrPhy, QuietSignalsCanPreventPreambleDetection) {
+  // A -82 dBm preamble has an SNR of 12 dB, but eight quiet signals of -94 dBm (-85 dBm together)
+  // leave it 2.5 dB of SINR, below the 4 dB detection needs. The frame is still sensed.
+  Scheduler scheduler;
+  RecordingListener listener;
+  Phy phy(sinr_config(), listener, &scheduler, 1);
+  FixedQuietSignals quiet;
+  for (int i = 0; i < 8; ++i) quiet.signals.push_back({us(0), us(5000), dbm_to_milliwatts(-94.0)});
+  phy.set_quiet_signal_source(&quiet, 0);
+  arrive(scheduler, phy, 1, -82.0, us(10));
+  scheduler.run_until(us(10000));
+  EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "idle"}));
+
+  // The same frame without them is received.
+  Scheduler alone_scheduler;
+  RecordingListener alone_listener;
+  Phy alone(sinr_config(), alone_listener, &alone_scheduler, 1);
+  arrive(alone_scheduler, alone, 1, -82.0, us(10));
+  alone_scheduler.run_until(us(10000));
+  EXPECT_EQ(alone_listener.log, (std::vector<std::string>{"busy", "idle", "rx 1"}));
+}
+
+TEST(WirelessChannel, QuietSignalsAreTheAudibleOnesBelowTheSensingThreshold) {
+  // log_distance with ns-3's defaults, a 120 m nominal range and a sensing floor of -10 dB: the
+  // sensing threshold (-92 dBm)
+  // falls at about 258 m, the interference floor (-103.97 dBm) at about 648 m. A node at 50 m
+  // gets the frame as events; a node at 400 m (-97.7 dBm) only as a quiet signal; a node at
+  // 700 m not at all.
+  PluginLoader loader;
+  Scenario scenario = test::make_scenario(loader, 4, "dcf80211", "direct");
+  scenario.network.propagation = {test::choose(loader, "log_distance", PluginKind::propagation)};
+  scenario.network.phy.model = PhyModel::sinr;
+  scenario.network.phy.tx_power_dbm = -82.0 + 46.6777 + 30.0 * std::log10(120.0);
+  scenario.network.phy.sensing_floor_db = -10.0;
+  Scheduler scheduler;
+  const PropagationChain chain(scenario, loader);
+  const double tx_power = scenario.network.phy.tx_power_dbm;
+  Channel channel(scenario, PropagationChain(scenario, loader), scheduler, 4);
+  EXPECT_NEAR(channel.event_cutoff_m(), 120.0 * std::pow(10.0, 10.0 / 30.0), 0.01);
+  EXPECT_NEAR(channel.cutoff_m(), 648.0, 1.0);
+  std::vector<RecordingListener> listeners(4);
+  std::vector<std::unique_ptr<Phy>> phys;
+  for (NodeId node = 0; node < 4; ++node) {
+    phys.push_back(std::make_unique<Phy>(scenario.network.phy, listeners[node], &scheduler, node));
+    channel.attach(node, *phys.back());
+  }
+  const std::vector<Vec2> positions{Vec2(0, 0), Vec2(50, 0), Vec2(400, 0), Vec2(700, 0)};
+  channel.set_positions(positions);
+  const SimTime duration = us(200);
+  channel.transmit(0, frame(0), duration);
+
+  std::vector<QuietSignal> quiet;
+  channel.quiet_signals(2, kTimeZero, us(1000), quiet);
+  ASSERT_EQ(quiet.size(), 1U);
+  const RadioLink link{0, 2, positions[0], positions[2], 400.0, 1};
+  EXPECT_EQ(quiet[0].start, Channel::propagation_delay(400.0));
+  EXPECT_EQ(quiet[0].end, quiet[0].start + duration);
+  EXPECT_EQ(quiet[0].power_mw, dbm_to_milliwatts(chain.rx_power_dbm(tx_power, link)));
+  // Not overlapping the question's interval: not reported.
+  const SimTime quiet_end = quiet[0].end;
+  quiet.clear();
+  channel.quiet_signals(2, quiet_end, us(2000), quiet);
+  EXPECT_TRUE(quiet.empty());
+  for (const NodeId node : {NodeId{0}, NodeId{1}, NodeId{3}}) {
+    channel.quiet_signals(node, kTimeZero, us(1000), quiet);
+    EXPECT_TRUE(quiet.empty()) << "node " << node;
+  }
+  scheduler.run_until(us(1000));
+  EXPECT_EQ(listeners[1].log, (std::vector<std::string>{"busy", "idle", "rx 1"}));
+  EXPECT_TRUE(listeners[2].log.empty());
+  EXPECT_TRUE(listeners[3].log.empty());
+
+  // The default sensing floor is below the interference floor: every audible signal is an event.
+  scenario.network.phy.sensing_floor_db = PhyConfig{}.sensing_floor_db;
+  Channel exact(scenario, PropagationChain(scenario, loader), scheduler, 4);
+  EXPECT_EQ(exact.event_cutoff_m(), exact.cutoff_m());
 }
 
 }  // namespace

@@ -23,9 +23,14 @@ Channel::Channel(const Scenario& scenario, PropagationChain chain, Scheduler& sc
       scheduler_(scheduler),
       tx_power_dbm_(scenario.network.phy.tx_power_dbm + scenario.network.phy.tx_gain_db),
       rx_gain_db_(scenario.network.phy.rx_gain_db),
-      cutoff_m_(cutoff_distance_m(chain_, tx_power_dbm_,
-                                  audibility_threshold_dbm(scenario.network.phy) - rx_gain_db_)),
-      use_grid_(scenario.network.channel.cutoff && std::isfinite(cutoff_m_)),
+      audibility_dbm_(audibility_threshold_dbm(scenario.network.phy)),
+      event_dbm_(event_threshold_dbm(scenario.network.phy)),
+      cutoff_m_(cutoff_distance_m(chain_, tx_power_dbm_, audibility_dbm_ - rx_gain_db_)),
+      event_cutoff_m_(event_dbm_ > audibility_dbm_
+                          ? cutoff_distance_m(chain_, tx_power_dbm_, event_dbm_ - rx_gain_db_)
+                          : cutoff_m_),
+      use_grid_(scenario.network.channel.cutoff && std::isfinite(event_cutoff_m_)),
+      has_quiet_signals_(event_dbm_ > audibility_dbm_),
       phys_(node_count, nullptr),
       positions_(node_count, Vec2::Zero()),
       arena_bounds_{0.0, 0.0, scenario.arena.width_m, scenario.arena.height_m} {
@@ -33,7 +38,10 @@ Channel::Channel(const Scenario& scenario, PropagationChain chain, Scheduler& sc
   rebuild_grid();
 }
 
-void Channel::attach(NodeId node, Phy& phy) { phys_.at(node) = &phy; }
+void Channel::attach(NodeId node, Phy& phy) {
+  phys_.at(node) = &phy;
+  if (has_quiet_signals_) phy.set_quiet_signal_source(this, node);
+}
 
 void Channel::set_positions(std::span<const Vec2> positions) {
   if (positions.size() != positions_.size()) {
@@ -41,6 +49,7 @@ void Channel::set_positions(std::span<const Vec2> positions) {
                                 std::to_string(positions_.size()) + " nodes");
   }
   std::copy(positions.begin(), positions.end(), positions_.begin());
+  positions_snapshot_.reset();
   rebuild_grid();
 }
 
@@ -55,7 +64,7 @@ void Channel::rebuild_grid() {
     bounds.y_max_m = std::max(bounds.y_max_m, p.y());
   }
   if (!grid_ready_ || bounds != grid_bounds_) {
-    grid_.reset(bounds, std::max(cutoff_m_, kMinCellM));
+    grid_.reset(bounds, std::max(event_cutoff_m_, kMinCellM));
     grid_bounds_ = bounds;
     grid_ready_ = true;
   }
@@ -77,35 +86,163 @@ void Channel::transmit(NodeId transmitter, Frame frame, SimTime duration) {
   frame.uid = next_frame_uid_++;
   frame.transmitter = transmitter;
   const std::uint64_t uid = frame.uid;
-  auto shared = std::make_shared<const Frame>(std::move(frame));
   scheduler_.schedule_in(duration, [&tx_phy] { tx_phy.end_transmission(); });
+  if (has_quiet_signals_) remember_on_air(frame, duration);
 
   const Vec2 tx_position = positions_[transmitter];
   candidates_.clear();
   if (use_grid_) {
-    if (cutoff_m_ <= 0.0) return;
-    grid_.for_each_candidate(tx_position, cutoff_m_,
+    if (event_cutoff_m_ <= 0.0) return;
+    grid_.for_each_candidate(tx_position, event_cutoff_m_,
                              [this](std::uint32_t node) { candidates_.push_back(node); });
     std::sort(candidates_.begin(), candidates_.end());
   } else {
     for (NodeId node = 0; node < positions_.size(); ++node) candidates_.push_back(node);
   }
 
+  const std::uint32_t index = acquire_fanout();
+  FrameFanout& fanout = *fanouts_[index];
+  fanout.arrivals.clear();
   for (const NodeId receiver : candidates_) {
     if (receiver == transmitter) continue;
     const Vec2& rx_position = positions_[receiver];
     const double distance_m = (rx_position - tx_position).norm();
-    if (use_grid_ && distance_m >= cutoff_m_) continue;
+    if (use_grid_ && distance_m >= event_cutoff_m_) continue;
     const RadioLink link{transmitter, receiver, tx_position, rx_position, distance_m, uid};
     const double power_dbm = chain_.rx_power_dbm(tx_power_dbm_, link) + rx_gain_db_;
-    Phy* rx_phy = phys_[receiver];
-    if (!rx_phy->audible(power_dbm)) continue;
-    const SimTime delay = propagation_delay(distance_m);
-    scheduler_.schedule_in(delay,
-                           [rx_phy, uid, power_dbm] { rx_phy->signal_start(uid, power_dbm); });
-    scheduler_.schedule_in(delay + duration,
-                           [rx_phy, shared, power_dbm] { rx_phy->signal_end(*shared, power_dbm); });
+    if (power_dbm < event_dbm_) continue;  // inaudible, or quiet: see quiet_signals()
+    fanout.arrivals.push_back(
+        Arrival{propagation_delay(distance_m), 0, phys_[receiver], power_dbm});
   }
+  if (fanout.arrivals.empty()) {
+    free_fanouts_.push_back(index);
+    return;
+  }
+  // Sequence numbers as if each receiver's start and end had been scheduled now, in receiver
+  // order; then arrival order, which is the order both streams run in.
+  std::uint64_t sequence = scheduler_.reserve_sequences(2 * fanout.arrivals.size());
+  for (Arrival& arrival : fanout.arrivals) {
+    arrival.sequence = sequence;
+    sequence += 2;
+  }
+  std::sort(fanout.arrivals.begin(), fanout.arrivals.end(), [](const Arrival& a, const Arrival& b) {
+    return a.delay != b.delay ? a.delay < b.delay : a.sequence < b.sequence;
+  });
+  fanout.frame = std::move(frame);
+  fanout.sent = scheduler_.now();
+  fanout.duration = duration;
+  fanout.next_start = 0;
+  fanout.next_end = 0;
+  schedule_next_start(index);
+  schedule_next_end(index);
+}
+
+void Channel::remember_on_air(const Frame& frame, SimTime duration) {
+  const SimTime now = scheduler_.now();
+  if (!positions_snapshot_) {
+    positions_snapshot_ = std::make_shared<const std::vector<Vec2>>(positions_);
+  }
+  SimTime reach = kTimeZero;
+  if (std::isfinite(cutoff_m_)) {
+    reach = propagation_delay(cutoff_m_);
+  } else {
+    // No cutoff: a frame reaches at most across the nodes' bounding box.
+    Rect box{positions_.front().x(), positions_.front().y(), positions_.front().x(),
+             positions_.front().y()};
+    for (const Vec2& p : positions_) {
+      box.x_min_m = std::min(box.x_min_m, p.x());
+      box.y_min_m = std::min(box.y_min_m, p.y());
+      box.x_max_m = std::max(box.x_max_m, p.x());
+      box.y_max_m = std::max(box.y_max_m, p.y());
+    }
+    reach = propagation_delay(std::hypot(box.x_max_m - box.x_min_m, box.y_max_m - box.y_min_m));
+  }
+  longest_reach_ = std::max(longest_reach_, reach);
+  longest_duration_ = std::max(longest_duration_, duration);
+  // A query asks about [from, now) with `from` no earlier than the start of a reception still
+  // under way: at most the longest frame plus the longest reach ago. Older frames cannot matter.
+  const SimTime horizon = now - longest_duration_ - longest_reach_;
+  while (!on_air_.empty() &&
+         on_air_.front().sent + on_air_.front().duration + longest_reach_ < horizon) {
+    on_air_.pop_front();
+  }
+  on_air_.push_back(OnAir{frame.uid, frame.transmitter, now, duration, positions_snapshot_});
+}
+
+void Channel::quiet_signals(NodeId receiver, SimTime from, SimTime to,
+                            std::vector<QuietSignal>& out) const {
+  const double cutoff_squared = cutoff_m_ * cutoff_m_;
+  for (const OnAir& frame : on_air_) {
+    if (frame.sent >= to) break;  // sent in order: every later one starts later still
+    if (frame.transmitter == receiver) continue;
+    if (frame.sent + frame.duration + longest_reach_ <= from) continue;
+    const std::vector<Vec2>& positions = *frame.positions;
+    const Vec2& tx_position = positions[frame.transmitter];
+    const Vec2& rx_position = positions[receiver];
+    const Vec2 offset = rx_position - tx_position;
+    if (use_grid_ && offset.squaredNorm() >= cutoff_squared) continue;
+    // The link exactly as transmit() would have computed it.
+    const double distance_m = offset.norm();
+    if (use_grid_ && distance_m >= cutoff_m_) continue;
+    const SimTime start = frame.sent + propagation_delay(distance_m);
+    const SimTime end = start + frame.duration;
+    if (start >= to || end <= from) continue;
+    const RadioLink link{frame.transmitter, receiver,   tx_position,
+                         rx_position,       distance_m, frame.uid};
+    const double power_dbm = chain_.rx_power_dbm(tx_power_dbm_, link) + rx_gain_db_;
+    if (power_dbm < audibility_dbm_ || power_dbm >= event_dbm_) continue;
+    out.push_back(QuietSignal{start, end, dbm_to_milliwatts(power_dbm)});
+  }
+}
+
+std::uint32_t Channel::acquire_fanout() {
+  if (!free_fanouts_.empty()) {
+    const std::uint32_t index = free_fanouts_.back();
+    free_fanouts_.pop_back();
+    return index;
+  }
+  fanouts_.push_back(std::make_unique<FrameFanout>());
+  return static_cast<std::uint32_t>(fanouts_.size() - 1);
+}
+
+void Channel::schedule_next_start(std::uint32_t index) {
+  FrameFanout& fanout = *fanouts_[index];
+  const Arrival& arrival = fanout.arrivals[fanout.next_start];
+  scheduler_.schedule_reserved(fanout.sent + arrival.delay, arrival.sequence, [this, index] {
+    // Starts that are due next are run here, without a round trip through the heap.
+    FrameFanout& f = *fanouts_[index];
+    while (true) {
+      const Arrival& a = f.arrivals[f.next_start++];
+      a.phy->signal_start(f.frame.uid, a.power_dbm);
+      if (f.next_start == f.arrivals.size()) return;
+      const Arrival& next = f.arrivals[f.next_start];
+      if (!scheduler_.advance_if_next(f.sent + next.delay, next.sequence)) break;
+    }
+    schedule_next_start(index);
+  });
+}
+
+void Channel::schedule_next_end(std::uint32_t index) {
+  FrameFanout& fanout = *fanouts_[index];
+  const Arrival& arrival = fanout.arrivals[fanout.next_end];
+  scheduler_.schedule_reserved(
+      fanout.sent + arrival.delay + fanout.duration, arrival.sequence + 1, [this, index] {
+        FrameFanout& f = *fanouts_[index];
+        while (true) {
+          const Arrival& a = f.arrivals[f.next_end++];
+          a.phy->signal_end(f.frame, a.power_dbm);
+          if (f.next_end == f.arrivals.size()) {
+            // Recycled only now: the receivers' callbacks above read the frame.
+            free_fanouts_.push_back(index);
+            return;
+          }
+          const Arrival& next = f.arrivals[f.next_end];
+          if (!scheduler_.advance_if_next(f.sent + next.delay + f.duration, next.sequence + 1)) {
+            break;
+          }
+        }
+        schedule_next_end(index);
+      });
 }
 
 }  // namespace swarmnet

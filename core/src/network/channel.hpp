@@ -7,6 +7,18 @@
 // its end one frame duration later. The transmitter's PHY ends its transmission at now + duration.
 // Powers and delays are fixed when the frame is sent (positions are constant within a step).
 //
+// Quiet signals (sinr model, network/phy.hpp): receivers whose signal is below the PHY's event
+// threshold get no events. The grid neighbourhood is searched only to the event cutoff (where
+// the strongest possible signal falls below that threshold), and the channel keeps the frames
+// still on the air, with the positions they were sent from, to answer a PHY's quiet_signals()
+// query by computing those links then, exactly as it would have at the transmission.
+//
+// Fan-out: the receivers' signal starts and ends are not put in the scheduler one event each (two
+// heap entries per receiver per frame made the heap, not the physics, the network half's main
+// cost). A frame's receivers are kept in a FrameFanout sorted by arrival, and one event per
+// stream (starts, ends) walks them, each step scheduled with the sequence number reserved for it
+// when the frame was sent. Events therefore run in exactly the order per-receiver events would.
+//
 // Candidates: with the cutoff on (scenario.network.channel.cutoff) and a finite cutoff distance,
 // the nodes of a uniform grid neighbourhood closer than the cutoff; otherwise every node. Both
 // give the same frames at the same receivers at the same times, because a node at or beyond the
@@ -14,7 +26,10 @@
 // models draw per (transmitter, receiver, frame uid), not per visit.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <deque>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -28,12 +43,19 @@
 
 namespace swarmnet {
 
-class Channel {
+class Channel final : public QuietSignalSource {
  public:
   Channel(const Scenario& scenario, PropagationChain chain, Scheduler& scheduler,
           std::size_t node_count);
 
-  // Registers node `node`'s PHY; every node must have one before the first transmission.
+  Channel(const Channel&) = delete;
+  Channel& operator=(const Channel&) = delete;
+  Channel(Channel&&) = delete;
+  Channel& operator=(Channel&&) = delete;
+  ~Channel() = default;
+
+  // Registers node `node`'s PHY (and makes the channel its quiet-signal source); every node must
+  // have one before the first transmission.
   void attach(NodeId node, Phy& phy);
 
   // Moves every node (one position per node) and rebuilds the grid.
@@ -48,6 +70,9 @@ class Channel {
   // The distance from which no node can notice a frame (+infinity if none): cutoff_distance_m
   // against the PHY's audibility threshold.
   [[nodiscard]] double cutoff_m() const { return cutoff_m_; }
+  // The distance from which no node gets a frame as events (its signal is at most quiet):
+  // cutoff_distance_m against the PHY's event threshold. The grid is searched to this distance.
+  [[nodiscard]] double event_cutoff_m() const { return event_cutoff_m_; }
   // Whether transmissions visit a grid neighbourhood (cutoff on and finite) or every node.
   [[nodiscard]] bool uses_grid() const { return use_grid_; }
   [[nodiscard]] const PropagationChain& propagation() const { return chain_; }
@@ -56,22 +81,64 @@ class Channel {
   // Propagation delay over `distance_m`, rounded to the nearest nanosecond.
   static SimTime propagation_delay(double distance_m);
 
+  void quiet_signals(NodeId receiver, SimTime from, SimTime to,
+                     std::vector<QuietSignal>& out) const override;
+
  private:
+  // A frame on its way to its receivers.
+  struct Arrival {
+    SimTime delay;
+    std::uint64_t sequence;  // of the signal's start; its end has sequence + 1
+    Phy* phy;
+    double power_dbm;
+  };
+  // A frame that may still reach someone, for quiet-signal queries.
+  struct OnAir {
+    std::uint64_t uid;
+    NodeId transmitter;
+    SimTime sent;
+    SimTime duration;
+    std::shared_ptr<const std::vector<Vec2>> positions;  // every node's, when it was sent
+  };
+  struct FrameFanout {
+    Frame frame;
+    SimTime sent{};
+    SimTime duration{};
+    std::vector<Arrival> arrivals;  // by (delay, sequence)
+    std::size_t next_start = 0;
+    std::size_t next_end = 0;
+  };
+
   void rebuild_grid();
+  void remember_on_air(const Frame& frame, SimTime duration);
+  std::uint32_t acquire_fanout();
+  void schedule_next_start(std::uint32_t fanout);
+  void schedule_next_end(std::uint32_t fanout);
 
   PropagationChain chain_;
   Scheduler& scheduler_;
   double tx_power_dbm_;  // transmit power plus transmit antenna gain
   double rx_gain_db_;
+  double audibility_dbm_;  // at the receiver, after its antenna gain
+  double event_dbm_;       // likewise; equal to audibility_dbm_ when there are no quiet signals
   double cutoff_m_;
+  double event_cutoff_m_;
   bool use_grid_;
+  bool has_quiet_signals_;
   std::vector<Phy*> phys_;
   std::vector<Vec2> positions_;
+  std::shared_ptr<const std::vector<Vec2>> positions_snapshot_;  // made at the step's first frame
+  std::deque<OnAir> on_air_;                                     // by time sent
+  SimTime longest_duration_{};
+  SimTime longest_reach_{};  // the largest propagation delay a remembered frame can have
   SpatialGrid grid_;
   Rect arena_bounds_;
   Rect grid_bounds_;
   bool grid_ready_ = false;
   std::vector<NodeId> candidates_;  // scratch, reused by every transmission
+  // Fan-outs are recycled (by index, so growth does not move a live one's address in use).
+  std::vector<std::unique_ptr<FrameFanout>> fanouts_;
+  std::vector<std::uint32_t> free_fanouts_;
   std::uint64_t next_frame_uid_ = 1;
 };
 

@@ -1,8 +1,9 @@
 #include "network/nist_error_rate.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <initializer_list>
+#include <cstddef>
 
 namespace swarmnet {
 
@@ -22,37 +23,41 @@ double uncoded_ber(ofdm::Modulation modulation, double sinr) {
   return 1.0;
 }
 
+// Horner's rule for weights[0] + weights[1] x + weights[2] x^2 + ...: one multiply-add per term
+// instead of a pow() each (the error model runs for every chunk of every reception).
+template <std::size_t N>
+double polynomial(const std::array<double, N>& weights, double x) {
+  double sum = 0.0;
+  for (std::size_t i = N; i-- > 0;) sum = sum * x + weights[i];
+  return sum;
+}
+
 // Union bound on the coded bit error probability: sum over distances d of c_d * D^d, with
 // D = sqrt(4 p (1 - p)) (Bhattacharyya parameter of hard decisions at raw error rate p).
 double coded_ber(ofdm::CodeRate rate, double p) {
   const double d = std::sqrt(4.0 * p * (1.0 - p));
-  const auto series = [d](int first_power, std::initializer_list<double> weights) {
-    double sum = 0.0;
-    int power = first_power;
-    for (const double weight : weights) sum += weight * std::pow(d, power++);
-    return sum;
-  };
+  const double d2 = d * d;
+  const double d4 = d2 * d2;
   switch (rate) {
     case ofdm::CodeRate::half: {
-      // Free distance 10; only even distances have paths.
-      const double weights[] = {36.0,     211.0,     1404.0,     11633.0,    77433.0,
-                                502690.0, 3322763.0, 21292910.0, 134365911.0};
-      double sum = 0.0;
-      int power = 10;
-      for (const double weight : weights) {
-        sum += weight * std::pow(d, power);
-        power += 2;
-      }
-      return 0.5 * sum;
+      // Free distance 10; only even distances have paths: D^10 (c_10 + c_12 D^2 + ...).
+      static constexpr std::array<double, 9> kWeights{
+          36.0, 211.0, 1404.0, 11633.0, 77433.0, 502690.0, 3322763.0, 21292910.0, 134365911.0};
+      return 0.5 * (d4 * d4 * d2) * polynomial(kWeights, d2);
     }
-    case ofdm::CodeRate::two_thirds:
-      return 1.0 / 4.0 *
-             series(6, {3.0, 70.0, 285.0, 1276.0, 6160.0, 27128.0, 117019.0, 498860.0, 2103891.0,
-                        8784123.0});
-    case ofdm::CodeRate::three_quarters:
-      return 1.0 / 6.0 *
-             series(5, {42.0, 201.0, 1492.0, 10469.0, 62935.0, 379644.0, 2253373.0, 13073811.0,
-                        75152755.0, 428005675.0});
+    case ofdm::CodeRate::two_thirds: {
+      // Free distance 6.
+      static constexpr std::array<double, 10> kWeights{
+          3.0, 70.0, 285.0, 1276.0, 6160.0, 27128.0, 117019.0, 498860.0, 2103891.0, 8784123.0};
+      return 1.0 / 4.0 * (d4 * d2) * polynomial(kWeights, d);
+    }
+    case ofdm::CodeRate::three_quarters: {
+      // Free distance 5.
+      static constexpr std::array<double, 10> kWeights{
+          42.0,     201.0,     1492.0,     10469.0,    62935.0,
+          379644.0, 2253373.0, 13073811.0, 75152755.0, 428005675.0};
+      return 1.0 / 6.0 * (d4 * d) * polynomial(kWeights, d);
+    }
   }
   return 1.0;
 }

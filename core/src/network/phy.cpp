@@ -45,6 +45,14 @@ double audibility_threshold_dbm(const PhyConfig& config) {
   return config.rx_sensitivity_dbm;
 }
 
+double event_threshold_dbm(const PhyConfig& config) {
+  if (config.model == PhyModel::sinr) {
+    return std::max(audibility_threshold_dbm(config),
+                    config.cca_threshold_dbm + config.sensing_floor_db);
+  }
+  return config.rx_sensitivity_dbm;
+}
+
 Phy::Phy(const PhyConfig& config, PhyListener& listener, Scheduler* scheduler, std::uint64_t seed)
     : config_(config),
       listener_(listener),
@@ -89,6 +97,57 @@ bool Phy::medium_busy() const {
 }
 
 bool Phy::audible(double rx_power_dbm) const { return rx_power_dbm >= audible_dbm_; }
+
+void Phy::set_quiet_signal_source(const QuietSignalSource* source, NodeId self) {
+  quiet_source_ = source;
+  self_ = self;
+}
+
+double Phy::quiet_mw_now() {
+  if (quiet_source_ == nullptr) return 0.0;
+  const SimTime now = scheduler_->now();
+  quiet_.clear();
+  quiet_source_->quiet_signals(self_, now, now + SimTime{1}, quiet_);
+  double total = 0.0;
+  for (const QuietSignal& signal : quiet_) total += signal.power_mw;
+  return total;
+}
+
+void Phy::add_quiet_interference(Lock& lock, SimTime end) {
+  if (quiet_source_ == nullptr || lock.interference_mw.empty()) return;
+  const SimTime from = lock.interference_mw.front().first;
+  quiet_.clear();
+  quiet_source_->quiet_signals(self_, from, end, quiet_);
+  if (quiet_.empty()) return;
+  // The steps change wherever a signal (handed over or quiet) starts or ends.
+  std::vector<SimTime>& times = quiet_times_;
+  times.clear();
+  for (const auto& step : lock.interference_mw) times.push_back(step.first);
+  for (const QuietSignal& signal : quiet_) {
+    if (signal.start > from && signal.start < end) times.push_back(signal.start);
+    if (signal.end > from && signal.end < end) times.push_back(signal.end);
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  std::vector<std::pair<SimTime, double>>& steps = quiet_steps_;
+  steps.clear();
+  std::size_t event_step = 0;
+  for (const SimTime time : times) {
+    // The last handed-over step at or before `time` (several may share one instant: the last
+    // one holds, as in success_probability).
+    while (event_step + 1 < lock.interference_mw.size() &&
+           lock.interference_mw[event_step + 1].first <= time) {
+      ++event_step;
+    }
+    double interference = lock.interference_mw[event_step].second;
+    for (const QuietSignal& signal : quiet_) {
+      if (signal.start <= time && time < signal.end) interference += signal.power_mw;
+    }
+    steps.emplace_back(time, interference);
+  }
+  // Swapped, not moved: both buffers keep their capacity for the next reception.
+  lock.interference_mw.swap(steps);
+}
 
 void Phy::report_busy_change() {
   const bool busy = medium_busy();
@@ -164,7 +223,9 @@ void Phy::detect_preamble(const std::vector<std::uint64_t>& candidates) {
   }
   if (best == nullptr || best->rx_power_dbm < config_.cca_threshold_dbm) return;
   const double interference = total_mw() - best->rx_power_mw;
-  const double sinr_db = 10.0 * std::log10(best->rx_power_mw / (noise_mw_ + interference));
+  // Quiet signals count here, but are not kept in the lock's steps: finish_lock adds them then.
+  const double sinr_db =
+      10.0 * std::log10(best->rx_power_mw / (noise_mw_ + interference + quiet_mw_now()));
   if (sinr_db < config_.preamble_snr_db) return;
   lock_ = Lock{best->frame_uid, best->rx_power_mw, best->start, {}};
   lock_->interference_mw.emplace_back(scheduler_->now(), std::max(interference, 0.0));
@@ -233,9 +294,10 @@ double Phy::success_probability(const Lock& lock, const Frame& frame, SimTime en
 }
 
 void Phy::finish_lock(const Frame& frame, double rx_power_dbm) {
-  const Lock lock = std::move(*lock_);
+  Lock lock = std::move(*lock_);
   lock_.reset();
   const SimTime now = scheduler_->now();
+  add_quiet_interference(lock, now);
   const double p_success = success_probability(lock, frame, now, true);
   RandomStream draw(derive_seed(seed_, {frame.uid}));
   const double draw_value = draw.uniform();

@@ -10,6 +10,15 @@
 //     20 MHz, 7 dB). Signals weaker than N + interference_floor_db (default -10 dB) are ignored
 //     (DESIGN.md section 7): the channel does not even deliver them, and its cutoff distance is
 //     computed against that floor. Every other arriving signal adds to the interference.
+//   - Quiet signals (opt-in): a signal below the sensing threshold (cca_threshold_dbm +
+//     sensing_floor_db, e.g. -92 dBm with -10 dB) can neither be detected nor, alone, make the
+//     medium busy. The channel does not hand such signals to the PHY one by one (at a 120 m range
+//     and -10 dB they are about five in six of all arrivals); the PHY asks the channel for those
+//     overlapping a reception when it needs the interference (QuietSignalSource). They count in
+//     every SINR exactly as other signals do, but not in the carrier-sense sum: that is the
+//     approximation, and it shows under saturation, where many distant transmitters add up
+//     (docs/performance.md). The default sensing floor (-100 dB) is below the interference
+//     floor, so no signal is quiet and the model is exact.
 //   - Preamble detection: a signal arriving while the PHY is neither transmitting nor locked on a
 //     frame opens a 4 us detection window (ns-3's PreambleDetectionDuration); signals arriving in
 //     the window join it. At its end the strongest of them still arriving is detected if its
@@ -47,14 +56,34 @@
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "network/scheduler.hpp"
 #include "scenario/scenario.hpp"
+#include "swarmnet/ids.hpp"
 #include "swarmnet/mac.hpp"
 #include "swarmnet/packet.hpp"
 
 namespace swarmnet {
+
+// A signal too weak to be sensed, as it reaches one receiver.
+struct QuietSignal {
+  SimTime start;
+  SimTime end;
+  double power_mw;
+};
+
+// Where a sinr PHY finds the quiet signals reaching it (the channel).
+class QuietSignalSource {
+ public:
+  // Appends to `out` the quiet signals that reach `receiver` and overlap [from, to).
+  virtual void quiet_signals(NodeId receiver, SimTime from, SimTime to,
+                             std::vector<QuietSignal>& out) const = 0;
+
+ protected:
+  ~QuietSignalSource() = default;
+};
 
 // What the PHY tells the layer above (the node, which forwards to its MAC).
 class PhyListener {
@@ -80,6 +109,11 @@ double noise_floor_dbm(const PhyConfig& config);
 // interference_floor_db.
 double audibility_threshold_dbm(const PhyConfig& config);
 
+// The weakest signal the channel hands to a PHY as an event (signal_start/signal_end): the
+// sinr model's sensing threshold, at least the audibility threshold. Signals between the two are
+// quiet (see above). Threshold model: the sensitivity.
+double event_threshold_dbm(const PhyConfig& config);
+
 class Phy {
  public:
   enum class State : std::uint8_t { idle, transmitting, receiving, busy };
@@ -97,6 +131,10 @@ class Phy {
   // Whether a signal of this power concerns this PHY at all; the channel schedules nothing for
   // signals that do not.
   [[nodiscard]] bool audible(double rx_power_dbm) const;
+
+  // sinr model: where to find the quiet signals reaching this PHY, which is node `self`. Without
+  // a source the PHY knows only the signals handed to it.
+  void set_quiet_signal_source(const QuietSignalSource* source, NodeId self);
 
   // The node's own transmission. start_transmission() while transmitting is a MAC bug and throws
   // std::logic_error.
@@ -129,6 +167,10 @@ class Phy {
   void detect_preamble(const std::vector<std::uint64_t>& candidates);
   void note_interference_change();
   void finish_lock(const Frame& frame, double rx_power_dbm);
+  // Total power of the quiet signals arriving now.
+  [[nodiscard]] double quiet_mw_now();
+  // The lock's interference steps with the quiet signals that overlapped it added in.
+  void add_quiet_interference(Lock& lock, SimTime end);
   [[nodiscard]] double success_probability(const Lock& lock, const Frame& frame, SimTime end,
                                            bool with_interference) const;
 
@@ -148,6 +190,12 @@ class Phy {
   std::vector<std::uint64_t> candidates_;  // frames whose preamble started in the window
   std::vector<std::uint64_t> window_;      // the window being judged (see end_detection_window)
   std::optional<Lock> lock_;
+  const QuietSignalSource* quiet_source_ = nullptr;
+  NodeId self_ = kNoNode;
+  // Scratch for quiet-signal queries and add_quiet_interference (no allocation per reception).
+  std::vector<QuietSignal> quiet_;
+  std::vector<SimTime> quiet_times_;
+  std::vector<std::pair<SimTime, double>> quiet_steps_;
 };
 
 const char* to_string(Phy::State state);

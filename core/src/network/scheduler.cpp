@@ -21,6 +21,24 @@ TimerId make_id(std::uint32_t slot, std::uint32_t generation) {
 }  // namespace
 
 TimerId Scheduler::schedule_at(SimTime time, Callback callback) {
+  return push_event(time, next_sequence_++, std::move(callback));
+}
+
+std::uint64_t Scheduler::reserve_sequences(std::uint64_t count) {
+  const std::uint64_t first = next_sequence_;
+  next_sequence_ += count;
+  return first;
+}
+
+TimerId Scheduler::schedule_reserved(SimTime time, std::uint64_t sequence, Callback callback) {
+  if (sequence >= next_sequence_) {
+    throw std::logic_error("Scheduler: sequence number " + std::to_string(sequence) +
+                           " was not reserved");
+  }
+  return push_event(time, sequence, std::move(callback));
+}
+
+TimerId Scheduler::push_event(SimTime time, std::uint64_t sequence, Callback callback) {
   if (time < now_) {
     throw std::logic_error("Scheduler: event scheduled in the past (at " +
                            std::to_string(time.count()) + " ns, now " +
@@ -38,7 +56,7 @@ TimerId Scheduler::schedule_at(SimTime time, Callback callback) {
   Slot& s = slots_[slot];
   s.callback = std::move(callback);
   s.armed = true;
-  heap_push(Entry{time, next_sequence_++, slot, s.generation});
+  heap_push(Entry{time, sequence, slot, s.generation});
   ++live_;
   return make_id(slot, s.generation);
 }
@@ -49,6 +67,15 @@ TimerId Scheduler::schedule_in(SimTime delay, Callback callback) {
   }
   const SimTime time = delay > kTimeNever - now_ ? kTimeNever : now_ + delay;
   return schedule_at(time, std::move(callback));
+}
+
+bool Scheduler::advance_if_next(SimTime time, std::uint64_t sequence) {
+  if (!running_ || time < now_ || time >= run_end_ || sequence >= next_sequence_) return false;
+  // A tombstone at the front may hide a later live event: then the answer is a conservative no.
+  if (!heap_.empty() && !earlier(Entry{time, sequence, 0, 0}, heap_.front())) return false;
+  now_ = time;
+  ++events_run_;
+  return true;
 }
 
 bool Scheduler::pending(TimerId timer) const {
@@ -70,7 +97,14 @@ std::uint64_t Scheduler::run_until(SimTime end) {
     throw std::logic_error("Scheduler: run_until(" + std::to_string(end.count()) +
                            " ns) is before now (" + std::to_string(now_.count()) + " ns)");
   }
-  std::uint64_t ran = 0;
+  const std::uint64_t events_before = events_run_;
+  run_end_ = end;
+  running_ = true;
+  // Cleared however the loop ends (a callback may throw).
+  struct RunningFlag {
+    bool& flag;
+    ~RunningFlag() { flag = false; }
+  } running_flag{running_};
   while (!heap_.empty() && heap_.front().time < end) {
     const Entry entry = heap_.front();
     heap_pop();
@@ -82,12 +116,11 @@ std::uint64_t Scheduler::run_until(SimTime end) {
     // Free the slot before running: the callback may schedule (reusing it) or cancel its own id.
     Callback callback = std::move(slots_[entry.slot].callback);
     release(entry.slot);
-    ++ran;
     ++events_run_;
     callback();
   }
   now_ = end;
-  return ran;
+  return events_run_ - events_before;
 }
 
 void Scheduler::clear() {

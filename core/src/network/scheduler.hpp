@@ -123,6 +123,20 @@ class Scheduler {
   TimerId schedule_at(SimTime time, Callback callback);
   // Runs `callback` after `delay` (>= 0, else std::logic_error); saturates at kTimeNever.
   TimerId schedule_in(SimTime delay, Callback callback);
+  // Reserves `count` consecutive insertion sequence numbers and returns the first. An event later
+  // scheduled with schedule_reserved(time, sequence, ...) runs exactly where an event scheduled
+  // at `time` at the moment of the reservation would have run. The channel uses it to hand a
+  // frame to its receivers one event at a time (a heap entry per frame, not per receiver)
+  // without changing the order of anything.
+  std::uint64_t reserve_sequences(std::uint64_t count);
+  // Runs `callback` at `time` (>= now()) in the place of reserved sequence number `sequence`.
+  // Each reserved number is used at most once; a number that was not reserved is a logic error.
+  TimerId schedule_reserved(SimTime time, std::uint64_t sequence, Callback callback);
+  // For the event running now, when it would otherwise schedule an event at (time, sequence), a
+  // reserved key: if that event would run next (before every pending event, within the current
+  // run_until), advances the clock to `time`, counts it as run and returns true; the caller then
+  // does its work at once, saving a heap push and pop. Otherwise returns false and changes nothing.
+  bool advance_if_next(SimTime time, std::uint64_t sequence);
   // Cancels a pending event. A fired, cancelled, unknown or kNoTimer id is ignored.
   void cancel(TimerId timer);
   [[nodiscard]] bool pending(TimerId timer) const;
@@ -157,6 +171,7 @@ class Scheduler {
     return a.time != b.time ? a.time < b.time : a.sequence < b.sequence;
   }
 
+  TimerId push_event(SimTime time, std::uint64_t sequence, Callback callback);
   [[nodiscard]] bool is_live(const Entry& entry) const;
   void release(std::uint32_t slot);
   void compact();
@@ -167,6 +182,8 @@ class Scheduler {
   void sift_down(std::size_t index);
 
   SimTime now_{kTimeZero};
+  SimTime run_end_{kTimeZero};  // the bound of the run_until in progress
+  bool running_ = false;
   std::uint64_t next_sequence_ = 0;
   std::uint64_t events_run_ = 0;
   std::size_t live_ = 0;

@@ -62,6 +62,8 @@ struct PhyConfig {
   double cca_threshold_dbm = -82.0;      // weakest frame whose preamble is detected (and sensed)
   double preamble_snr_db = 4.0;          // SINR a preamble needs to be detected
   double interference_floor_db = -10.0;  // signals below noise floor + this are ignored
+  // Signals below cca_threshold + this are quiet (not carrier-sensed); the default makes none.
+  double sensing_floor_db = -100.0;
 };
 
 struct ChannelConfig {

@@ -103,6 +103,7 @@ Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>
   s.network.phy.cca_threshold_dbm = phy["cca_threshold_dbm"].as<double>();
   s.network.phy.preamble_snr_db = phy["preamble_snr_db"].as<double>();
   s.network.phy.interference_floor_db = phy["interference_floor_db"].as<double>();
+  s.network.phy.sensing_floor_db = phy["sensing_floor_db"].as<double>();
   s.network.channel.cutoff = network["channel"]["cutoff"].as<bool>();
   s.network.mac = plugin("network.mac");
   s.network.routing = plugin("network.routing");

@@ -195,6 +195,11 @@ const KeySpec& scenario_schema() {
         real_key("interference_floor_db", "dB", "sinr model: signals weaker than noise floor + "
                                                 "this are ignored (neither interfere nor sensed).")
             .between(-100, 0).defaults("-10"),
+        real_key("sensing_floor_db", "dB",
+                 "sinr model: signals weaker than cca_threshold_dbm + this are quiet: they "
+                 "interfere but are not carrier-sensed, and cost nothing until a reception needs "
+                 "them (faster). The default leaves no signal quiet (exact).")
+            .between(-200, 0).defaults("-100"),
       }),
       map_key("channel", "The shared medium.", {
         boolean_key("cutoff", "Visit only nodes that could possibly hear a frame (exact; turn off "
