@@ -5,9 +5,11 @@
 // nominal range (27.05 dBm), routing `direct`. Every node sends one 256-byte broadcast and one
 // 256-byte unicast to a random node within 100 m per second, at random instants. Only the network
 // half runs (no robot half, no transport): the CPU time of NetworkSimulator::run_step is measured
-// with the process CPU clock.
+// with the process CPU clock. --sensing-floor-db sets network.phy.sensing_floor_db (quiet
+// signals, network/phy.hpp; default: the scenario default, exact).
 //
-//   channel_scaling [--nodes 50,200,800,3200] [--sim-s 10] [--no-cutoff] [--out results.json]
+//   channel_scaling [--nodes 50,200,800,3200] [--sim-s 10] [--no-cutoff] [--sensing-floor-db D]
+//                   [--out results.json]
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -34,7 +36,8 @@ double cpu_seconds() {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-nlohmann::ordered_json run(PluginLoader& loader, std::uint32_t nodes, double sim_s, bool cutoff) {
+nlohmann::ordered_json run(PluginLoader& loader, std::uint32_t nodes, double sim_s, bool cutoff,
+                           double sensing_floor_db) {
   Scenario scenario;
   scenario.name = "channel-scaling";
   scenario.seed = 1;
@@ -48,6 +51,7 @@ nlohmann::ordered_json run(PluginLoader& loader, std::uint32_t nodes, double sim
       default_plugin_choice(loader, "log_distance", PluginKind::propagation)};
   scenario.network.phy.model = PhyModel::sinr;
   scenario.network.phy.tx_power_dbm = -82.0 + 46.6777 + 30.0 * std::log10(120.0);
+  scenario.network.phy.sensing_floor_db = sensing_floor_db;
   scenario.network.channel.cutoff = cutoff;
   scenario.network.mac = default_plugin_choice(loader, "dcf80211", PluginKind::mac);
   scenario.network.routing = default_plugin_choice(loader, "direct", PluginKind::routing);
@@ -95,6 +99,8 @@ nlohmann::ordered_json run(PluginLoader& loader, std::uint32_t nodes, double sim
   row["side_m"] = side;
   row["cutoff"] = cutoff;
   row["cutoff_m"] = simulator.channel().cutoff_m();
+  row["sensing_floor_db"] = sensing_floor_db;
+  row["event_cutoff_m"] = simulator.channel().event_cutoff_m();
   row["sim_s"] = sim_s;
   row["cpu_s"] = cpu;
   row["cpu_per_sim_s"] = cpu / sim_s;
@@ -112,6 +118,7 @@ static int run_benchmark(int argc, char** argv) {
   std::vector<std::uint32_t> sizes = {50, 200, 800, 3200};
   double sim_s = 10.0;
   bool cutoff = true;
+  double sensing_floor_db = swarmnet::PhyConfig{}.sensing_floor_db;
   std::string out;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -125,11 +132,13 @@ static int run_benchmark(int argc, char** argv) {
       sim_s = std::stod(argv[++i]);
     } else if (arg == "--no-cutoff") {
       cutoff = false;
+    } else if (arg == "--sensing-floor-db" && i + 1 < argc) {
+      sensing_floor_db = std::stod(argv[++i]);
     } else if (arg == "--out" && i + 1 < argc) {
       out = argv[++i];
     } else {
       std::cerr << "usage: channel_scaling [--nodes 50,200,800,3200] [--sim-s 10] [--no-cutoff] "
-                   "[--out results.json]\n";
+                   "[--sensing-floor-db D] [--out results.json]\n";
       return 2;
     }
   }
@@ -138,7 +147,7 @@ static int run_benchmark(int argc, char** argv) {
   results["benchmark"] = "channel_scaling";
   results["results"] = nlohmann::ordered_json::array();
   for (const std::uint32_t n : sizes) {
-    auto row = run(loader, n, sim_s, cutoff);
+    auto row = run(loader, n, sim_s, cutoff, sensing_floor_db);
     std::cerr << "N = " << n << ": " << row["cpu_per_sim_s"].get<double>()
               << " CPU-s per simulated s (" << row["tx_frames"] << " frames, pdr "
               << row["pdr"].get<double>() << ")\n";

@@ -93,9 +93,9 @@ void Channel::transmit(NodeId transmitter, Frame frame, SimTime duration) {
   candidates_.clear();
   if (use_grid_) {
     if (event_cutoff_m_ <= 0.0) return;
+    // In cell order: the arrivals are sorted below, so candidates need no order of their own.
     grid_.for_each_candidate(tx_position, event_cutoff_m_,
                              [this](std::uint32_t node) { candidates_.push_back(node); });
-    std::sort(candidates_.begin(), candidates_.end());
   } else {
     for (NodeId node = 0; node < positions_.size(); ++node) candidates_.push_back(node);
   }
@@ -112,22 +112,22 @@ void Channel::transmit(NodeId transmitter, Frame frame, SimTime duration) {
     const double power_dbm = chain_.rx_power_dbm(tx_power_dbm_, link) + rx_gain_db_;
     if (power_dbm < event_dbm_) continue;  // inaudible, or quiet: see quiet_signals()
     fanout.arrivals.push_back(
-        Arrival{propagation_delay(distance_m), 0, phys_[receiver], power_dbm});
+        Arrival{propagation_delay(distance_m), receiver, 0, phys_[receiver], power_dbm});
   }
   if (fanout.arrivals.empty()) {
     free_fanouts_.push_back(index);
     return;
   }
-  // Sequence numbers as if each receiver's start and end had been scheduled now, in receiver
-  // order; then arrival order, which is the order both streams run in.
+  // Arrival order (receivers at the same distance by id), which both streams run in; sequence
+  // numbers as if each receiver's start and end had been scheduled now, in that order.
+  std::sort(fanout.arrivals.begin(), fanout.arrivals.end(), [](const Arrival& a, const Arrival& b) {
+    return a.delay != b.delay ? a.delay < b.delay : a.receiver < b.receiver;
+  });
   std::uint64_t sequence = scheduler_.reserve_sequences(2 * fanout.arrivals.size());
   for (Arrival& arrival : fanout.arrivals) {
     arrival.sequence = sequence;
     sequence += 2;
   }
-  std::sort(fanout.arrivals.begin(), fanout.arrivals.end(), [](const Arrival& a, const Arrival& b) {
-    return a.delay != b.delay ? a.delay < b.delay : a.sequence < b.sequence;
-  });
   fanout.frame = std::move(frame);
   fanout.sent = scheduler_.now();
   fanout.duration = duration;

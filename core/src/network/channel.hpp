@@ -88,6 +88,7 @@ class Channel final : public QuietSignalSource {
   // A frame on its way to its receivers.
   struct Arrival {
     SimTime delay;
+    NodeId receiver;
     std::uint64_t sequence;  // of the signal's start; its end has sequence + 1
     Phy* phy;
     double power_dbm;
@@ -104,7 +105,7 @@ class Channel final : public QuietSignalSource {
     Frame frame;
     SimTime sent{};
     SimTime duration{};
-    std::vector<Arrival> arrivals;  // by (delay, sequence)
+    std::vector<Arrival> arrivals;  // by (delay, receiver); sequences ascending
     std::size_t next_start = 0;
     std::size_t next_end = 0;
   };

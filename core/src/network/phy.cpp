@@ -62,8 +62,9 @@ Phy::Phy(const PhyConfig& config, PhyListener& listener, Scheduler* scheduler, s
       audible_dbm_(audibility_threshold_dbm(config)),
       energy_detection_mw_(dbm_to_milliwatts(config.energy_detection_dbm)),
       cca_threshold_mw_(dbm_to_milliwatts(config.cca_threshold_dbm)) {
-  if (sinr_model() && scheduler_ == nullptr) {
-    throw std::logic_error("PHY: the sinr model needs a scheduler");
+  if (sinr_model()) {
+    if (scheduler_ == nullptr) throw std::logic_error("PHY: the sinr model needs a scheduler");
+    detection_lane_ = scheduler_->lane(kDetectionWindow);
   }
 }
 
@@ -193,7 +194,7 @@ void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm) {
   } else if (!transmitting_) {
     candidates_.push_back(frame_uid);
     if (detection_timer_ == kNoTimer) {
-      detection_timer_ = scheduler_->schedule_in(kDetectionWindow, [this] {
+      detection_timer_ = scheduler_->schedule_in_lane(detection_lane_, [this] {
         detection_timer_ = kNoTimer;
         end_detection_window();
       });

@@ -187,6 +187,7 @@ class Phy {
   std::vector<Arrival> arrivals_;  // signals currently arriving, in arrival order
   // sinr state
   TimerId detection_timer_ = kNoTimer;
+  Scheduler::LaneId detection_lane_ = 0;   // every PHY's windows share one FIFO (scheduler.hpp)
   std::vector<std::uint64_t> candidates_;  // frames whose preamble started in the window
   std::vector<std::uint64_t> window_;      // the window being judged (see end_detection_window)
   std::optional<Lock> lock_;

@@ -7,6 +7,12 @@
 // entry behind as a tombstone that is skipped when it surfaces (lazy deletion); when tombstones
 // outnumber live entries the heap is compacted, so cancelled timers never accumulate.
 //
+// Lanes: timers that all share one delay (the PHY's 4 us preamble-detection window, opened at
+// nearly every receiver of every frame) are scheduled in (time, sequence) order by construction,
+// so a FIFO per delay keeps them sorted without a heap entry each; one heap entry stands for a
+// lane's earliest timer. Sequence numbers are taken exactly as for other events, so the order
+// events run in does not change.
+//
 // Cost (docs/performance.md): the channel schedules two events per receiver of every frame, so
 // the callback type stores captures of up to EventCallback::kInlineBytes inline (no allocation
 // per event; a std::function handed in by a plugin fits as well), and the heap is 4-ary (half the
@@ -15,6 +21,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <new>
 #include <type_traits>
@@ -123,6 +130,12 @@ class Scheduler {
   TimerId schedule_at(SimTime time, Callback callback);
   // Runs `callback` after `delay` (>= 0, else std::logic_error); saturates at kTimeNever.
   TimerId schedule_in(SimTime delay, Callback callback);
+
+  using LaneId = std::uint32_t;
+  // The lane of timers with this delay (>= 0), made on first use.
+  LaneId lane(SimTime delay);
+  // As schedule_in(the lane's delay, callback), kept in the lane instead of the heap.
+  TimerId schedule_in_lane(LaneId lane, Callback callback);
   // Reserves `count` consecutive insertion sequence numbers and returns the first. An event later
   // scheduled with schedule_reserved(time, sequence, ...) runs exactly where an event scheduled
   // at `time` at the moment of the reservation would have run. The channel uses it to hand a
@@ -160,6 +173,7 @@ class Scheduler {
     Callback callback;
     std::uint32_t generation = 1;  // bumped on release, so stale ids and entries do not match
     bool armed = false;
+    bool in_lane = false;  // a cancelled lane timer leaves no heap tombstone
   };
   struct Entry {
     SimTime time;
@@ -170,8 +184,20 @@ class Scheduler {
   static bool earlier(const Entry& a, const Entry& b) {
     return a.time != b.time ? a.time < b.time : a.sequence < b.sequence;
   }
+  // A heap entry whose slot has this bit stands for the lane (slot & ~kLaneBit).
+  static constexpr std::uint32_t kLaneBit = 0x80000000U;
+  struct Lane {
+    SimTime delay;
+    std::deque<Entry> timers;  // (time, sequence) ascending
+    bool in_heap = false;      // whether a heap entry stands for timers.front()
+  };
 
   TimerId push_event(SimTime time, std::uint64_t sequence, Callback callback);
+  std::uint32_t take_slot(Callback callback, bool in_lane);
+  // Drops cancelled timers from the lane's front and, if any is left, puts its entry in the heap.
+  void push_lane_head(LaneId lane);
+  // The heap entry `entry` for a lane surfaced: runs the lane's first timer if it is the one.
+  void run_lane(const Entry& entry);
   [[nodiscard]] bool is_live(const Entry& entry) const;
   void release(std::uint32_t slot);
   void compact();
@@ -191,6 +217,7 @@ class Scheduler {
   std::vector<Entry> heap_;
   std::vector<Slot> slots_;
   std::vector<std::uint32_t> free_slots_;
+  std::vector<Lane> lanes_;
 };
 
 }  // namespace swarmnet
