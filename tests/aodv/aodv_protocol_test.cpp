@@ -203,16 +203,33 @@ TEST(AodvProtocol, HelloLossBreaksTheLinkWithoutMacFeedback) {
   net.send(0, 2, 1);
   net.run_until(s(1));
   ASSERT_NE(delivery_of(net, 1), nullptr);
-  net.move(2, {200, 500});
+  net.move(1, {100, 500});  // the relay leaves
   const SimTime left = net.now();
   net.run_until(left + s(0.9));
   EXPECT_NE(net.valid_route(0, 2), nullptr);  // too early to notice
   net.run_until(left + s(4));
-  EXPECT_EQ(net.valid_route(1, 2), nullptr);
   EXPECT_EQ(net.valid_route(0, 2), nullptr);
-  EXPECT_EQ(net.count(1, "link_breaks"), 1U);
-  EXPECT_EQ(net.count(1, "control_rerr"), 1U);
-  EXPECT_EQ(net.count(1, "link_failures"), 0U);
+  EXPECT_EQ(net.count(0, "link_breaks"), 1U);
+  EXPECT_EQ(net.count(0, "link_failures"), 0U);
+}
+
+// ns-3.37 (Forwarding) refreshes the neighbour entry of the next hop on every forwarded packet:
+// without layer-2 feedback a relay does not notice that its next hop has gone while traffic
+// flows, and the packets are lost.
+TEST(AodvProtocol, ForwardingKeepsTheNextHopAliveAsInNs3) {
+  TestNetwork net(line(3), aodv_params(), false);
+  std::uint64_t id = 1;
+  net.send(0, 2, id++);
+  net.run_until(s(1));
+  ASSERT_NE(delivery_of(net, 1), nullptr);
+  net.move(2, {200, 500});  // the destination leaves
+  for (int k = 0; k < 25; ++k) {
+    net.send(0, 2, id++);
+    net.run_for(s(0.2));
+  }
+  EXPECT_EQ(net.count(1, "link_breaks"), 0U);
+  EXPECT_NE(net.valid_route(1, 2), nullptr);
+  EXPECT_EQ(net.deliveries().size(), 1U);
 }
 
 TEST(AodvProtocol, RouteIsRepairedThroughAnotherRelayWhenTheMiddleRobotLeaves) {
@@ -295,6 +312,130 @@ TEST(AodvProtocol, AcknowledgedRrepsBlacklistNobody) {
   ASSERT_NE(delivery_of(net, 1), nullptr);
   EXPECT_EQ(net.count("control_rrep_ack"), 3U);  // one per RREP hop
   EXPECT_EQ(net.count("blacklisted"), 0U);
+}
+
+// ns-3.37 sets the A flag when an intermediate node answers for its neighbour but never starts
+// the RREP-ACK timer, and does not blacklist a neighbour a RREP could not be delivered to.
+TEST(AodvProtocol, NeitherAMissingRrepAckNorAnUndeliveredRrepBlacklists) {
+  TestNetwork undelivered(line(3), aodv_params({{"enable_hello", false}}), true);
+  undelivered.block(2, 1);  // the destination's RREP never reaches the relay
+  undelivered.send(0, 2, 1);
+  undelivered.run_until(s(1));
+  EXPECT_GE(undelivered.count(2, "link_failures"), 1U);
+  EXPECT_EQ(undelivered.count("blacklisted"), 0U);
+
+  TestNetwork unacknowledged(line(3), aodv_params(), false);
+  unacknowledged.block(0, 1);        // node 0's RREP-ACK never reaches node 1
+  unacknowledged.run_until(s(1.5));  // node 1 knows node 2 from its HELLOs
+  Rreq rreq;
+  rreq.originator = 0;
+  rreq.originator_seq = 1;
+  rreq.id = 1;
+  rreq.destination = 2;
+  rreq.unknown_seq = true;
+  rreq.ttl = 3;
+  unacknowledged.inject(1, rreq, 0);
+  unacknowledged.run_for(s(0.5));
+  EXPECT_EQ(unacknowledged.count(1, "control_rrep"), 1U);  // answered for its neighbour, A set
+  EXPECT_EQ(unacknowledged.count(0, "control_rrep_ack"), 1U);
+  EXPECT_EQ(unacknowledged.count("blacklisted"), 0U);
+}
+
+// ns-3.37 routes AODV's unicast control messages through IP, whose route lookup is AODV's own:
+// a gratuitous RREP towards a next hop whose own route has expired waits for a RREQ that finds
+// that neighbour again.
+TEST(AodvProtocol, ControlMessageToANeighbourWithoutARouteWaitsForADiscovery) {
+  TestNetwork net(line(4), aodv_params({{"enable_hello", false}}), false);
+  Rrep to_three;  // node 1 learns node 3 through node 2, for 10 s
+  to_three.destination = 3;
+  to_three.destination_seq = 5;
+  to_three.originator = 0;
+  to_three.hop_count = 1;
+  to_three.lifetime_ms = 10000;
+  net.inject(1, to_three, 2);
+  net.run_until(s(3.5));  // its route to node 2 itself (active_route_timeout) has expired
+  ASSERT_NE(net.valid_route(1, 3), nullptr);
+  ASSERT_EQ(net.valid_route(1, 2), nullptr);
+
+  Rreq rreq;
+  rreq.originator = 0;
+  rreq.originator_seq = 1;
+  rreq.id = 1;
+  rreq.destination = 3;
+  rreq.destination_seq = 5;
+  rreq.gratuitous = true;
+  rreq.ttl = 5;
+  net.inject(1, rreq, 0);
+  EXPECT_TRUE(net.aodv(1).discovering(2));
+  EXPECT_EQ(net.count(1, "route_discoveries"), 1U);
+  EXPECT_EQ(net.count(1, "control_rrep"), 1U);  // the reply to node 0 went at once
+  net.run_for(s(1));
+  EXPECT_NE(net.valid_route(1, 2), nullptr);
+  EXPECT_EQ(net.count(1, "control_rrep"), 2U);  // then the gratuitous one to node 2
+  const bool gratuitous_heard =
+      std::any_of(net.receptions().begin(), net.receptions().end(), [](const test::Reception& r) {
+        return r.receiver == 2 && r.from == 1 && !r.header.empty() && r.header[0] == 2 &&
+               decode(r.header).has_value() && !std::get<Rrep>(*decode(r.header)).is_hello();
+      });
+  EXPECT_TRUE(gratuitous_heard);
+}
+
+// ns-3.37 draws its first HELLO in whole milliseconds up to 100 ms and every broadcast jitter in
+// whole milliseconds up to 10 ms (UniformRandomVariable::GetInteger), so HELLOs leave on whole
+// milliseconds.
+TEST(AodvProtocol, HellosLeaveOnWholeMilliseconds) {
+  TestNetwork net(line(3), aodv_params(), false);
+  net.run_until(s(3.5));
+  // Every HELLO has the same airtime, so all are heard at the same offset within a millisecond.
+  constexpr std::int64_t kMs = 1'000'000;
+  std::optional<std::int64_t> offset;
+  std::size_t hellos = 0;
+  for (const test::Reception& r : net.receptions()) {
+    const std::optional<Message> message = decode(r.header);
+    if (!message || !std::holds_alternative<Rrep>(*message)) continue;
+    ++hellos;
+    if (!offset) offset = r.at.count() % kMs;
+    EXPECT_EQ(r.at.count() % kMs, *offset)
+        << "HELLO from " << r.from << " heard at " << to_seconds(r.at);
+  }
+  EXPECT_GE(hellos, 8U);
+}
+
+// ns-3.37 notes a broadcast for the HELLO rule only when it sends or relays a RREQ: a node that
+// broadcasts a RERR still sends its next HELLO.
+TEST(AodvProtocol, ABroadcastRerrDoesNotStandInForAHello) {
+  std::vector<Vec2> positions = line(3);
+  positions.emplace_back(100, 60);  // node 3, a second precursor of node 1 for node 2
+  TestNetwork net(positions, aodv_params(), true);
+  net.send(0, 2, 1);
+  net.send(3, 2, 2);
+  net.run_until(s(1.2));
+  ASSERT_NE(delivery_of(net, 1), nullptr);
+  ASSERT_NE(delivery_of(net, 2), nullptr);
+  ASSERT_EQ(net.valid_route(1, 2)->precursors.size(), 2U);
+  net.move(2, {200, 500});
+  net.send(0, 2, 3);  // node 1's MAC reports the failure; node 1 broadcasts the RERR
+  net.run_for(s(0.1));
+  ASSERT_EQ(net.count(1, "control_rerr"), 1U);
+  const std::uint64_t hellos = net.count(1, "control_hello");
+  net.run_for(s(1.05));  // one HELLO tick later
+  EXPECT_EQ(net.count(1, "control_hello"), hellos + 1);
+}
+
+// With link_layer_feedback off the MAC's failure reports are counted and otherwise ignored.
+TEST(AodvProtocol, MacFailureReportsAreIgnoredWithoutLinkLayerFeedback) {
+  TestNetwork net(line(3), aodv_params({{"enable_hello", false}, {"link_layer_feedback", false}}),
+                  true);
+  net.send(0, 2, 1);
+  net.run_until(s(1));
+  ASSERT_NE(delivery_of(net, 1), nullptr);
+  net.move(2, {200, 500});
+  net.send(0, 2, 2);
+  net.run_for(s(0.1));
+  EXPECT_EQ(net.count(1, "link_failures"), 1U);
+  EXPECT_EQ(net.count(1, "link_breaks"), 0U);
+  EXPECT_EQ(net.count("control_rerr"), 0U);
+  EXPECT_NE(net.valid_route(1, 2), nullptr);
 }
 
 TEST(AodvProtocol, BufferIsBoundedAndTimedOut) {

@@ -19,8 +19,8 @@
 #include <iostream>
 #include <map>
 #include <memory>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -54,7 +54,10 @@ struct Options {
   // MAC.
   std::uint32_t rts_threshold_bytes = 65535;
   std::uint32_t queue_packets = 0;  // 0: ns-3's default
-  double queue_max_delay_s = 0.0;   // 0: ns-3's default
+  // ARP entries filled in advance: "permanent", or "auto-generated" as NeighborCacheHelper
+  // leaves them (then ns-3's AODV cannot map a neighbour to its MAC address: no layer-2 feedback).
+  std::string arp_entries = "auto-generated";
+  double queue_max_delay_s = 0.0;  // 0: ns-3's default
   // Flooding.
   sv::FloodingConfig flooding;
 };
@@ -65,10 +68,11 @@ struct MacCounters {
   std::uint64_t data_frames = 0;
   std::uint64_t ack_frames = 0;
   std::uint64_t other_frames = 0;
-  std::uint64_t retries = 0;  // data frames with the Retry bit set
+  std::uint64_t retries = 0;    // data frames with the Retry bit set
   std::uint64_t rx_errors = 0;  // frames detected but not decoded (SINR too low: collisions)
   std::uint64_t tx_drops = 0;   // frames the MAC gave up (retry limit, queue)
-  std::map<std::string, std::uint64_t> rx_drops;  // PhyRxDrop events by reason
+  std::map<std::string, std::uint64_t> dropped_mpdus;  // WifiMac DroppedMpdu events by reason
+  std::map<std::string, std::uint64_t> rx_drops;       // PhyRxDrop events by reason
 };
 
 struct RoutingCounters {
@@ -79,6 +83,10 @@ struct RoutingCounters {
   std::uint64_t rrep_ack = 0;
   std::uint64_t control_bytes = 0;
   std::uint64_t data_forwards = 0;
+  // Breakdown, to compare discovery behaviour with SwarmNet's counters.
+  std::uint64_t rreq_originated = 0;  // hop count 0, sent by their originator
+  std::map<std::uint32_t, std::uint64_t> rreq_originated_by_ttl;  // IP TTL of each first copy
+  std::uint64_t rerr_broadcast = 0;
 };
 
 MacCounters g_mac;
@@ -111,6 +119,26 @@ void on_phy_rx_error(ns3::Ptr<const ns3::Packet> /*packet*/, double /*snr*/) { +
 
 void on_mac_tx_drop(ns3::Ptr<const ns3::Packet> /*packet*/) { ++g_mac.tx_drops; }
 
+// The MAC's DroppedMpdu trace is what ns-3's AODV takes as layer-2 feedback (a unicast MPDU
+// dropped for any reason closes the link to its receiver).
+void on_dropped_mpdu(ns3::WifiMacDropReason reason, ns3::Ptr<const ns3::WifiMpdu> mpdu) {
+  if (mpdu->GetHeader().GetAddr1().IsGroup()) return;
+  switch (reason) {
+    case ns3::WIFI_MAC_DROP_FAILED_ENQUEUE:
+      ++g_mac.dropped_mpdus["failed_enqueue"];
+      break;
+    case ns3::WIFI_MAC_DROP_EXPIRED_LIFETIME:
+      ++g_mac.dropped_mpdus["expired_lifetime"];
+      break;
+    case ns3::WIFI_MAC_DROP_REACHED_RETRY_LIMIT:
+      ++g_mac.dropped_mpdus["retry_limit"];
+      break;
+    case ns3::WIFI_MAC_DROP_QOS_OLD_PACKET:
+      ++g_mac.dropped_mpdus["qos_old_packet"];
+      break;
+  }
+}
+
 // Every IP packet sent on a wireless interface: AODV control packets are counted by type.
 void on_ip_tx(ns3::Ptr<const ns3::Packet> packet, ns3::Ptr<ns3::Ipv4> /*ipv4*/,
               std::uint32_t interface) {
@@ -127,7 +155,16 @@ void on_ip_tx(ns3::Ptr<const ns3::Packet> packet, ns3::Ptr<ns3::Ipv4> /*ipv4*/,
   if (!type.IsValid()) return;
   g_routing.control_bytes += packet->GetSize();
   switch (type.Get()) {
-    case ns3::aodv::AODVTYPE_RREQ: ++g_routing.rreq; break;
+    case ns3::aodv::AODVTYPE_RREQ: {
+      ++g_routing.rreq;
+      ns3::aodv::RreqHeader rreq;
+      copy->RemoveHeader(rreq);
+      if (rreq.GetHopCount() == 0 && rreq.GetOrigin() == ip.GetSource()) {
+        ++g_routing.rreq_originated;
+        ++g_routing.rreq_originated_by_ttl[ip.GetTtl()];
+      }
+      break;
+    }
     case ns3::aodv::AODVTYPE_RREP: {
       ns3::aodv::RrepHeader rrep;
       copy->RemoveHeader(rrep);
@@ -143,8 +180,17 @@ void on_ip_tx(ns3::Ptr<const ns3::Packet> packet, ns3::Ptr<ns3::Ipv4> /*ipv4*/,
       }
       break;
     }
-    case ns3::aodv::AODVTYPE_RERR: ++g_routing.rerr; break;
-    case ns3::aodv::AODVTYPE_RREP_ACK: ++g_routing.rrep_ack; break;
+    case ns3::aodv::AODVTYPE_RERR: {
+      ++g_routing.rerr;
+      const ns3::Ipv4Address to = ip.GetDestination();
+      if (to.IsBroadcast() || to.IsSubnetDirectedBroadcast(ns3::Ipv4Mask(kSubnetMask))) {
+        ++g_routing.rerr_broadcast;
+      }
+      break;
+    }
+    case ns3::aodv::AODVTYPE_RREP_ACK:
+      ++g_routing.rrep_ack;
+      break;
   }
 }
 
@@ -179,8 +225,7 @@ std::uint32_t count_nodes(const std::string& path) {
 double summary_duration_s(const std::string& run_dir) {
   std::ifstream in(run_dir + "/summary.json");
   if (!in) {
-    throw std::runtime_error(run_dir +
-                             "/summary.json: cannot open it; give --duration-s instead");
+    throw std::runtime_error(run_dir + "/summary.json: cannot open it; give --duration-s instead");
   }
   const nlohmann::json summary = nlohmann::json::parse(in);
   return summary.at("sim_time_s").get<double>();
@@ -223,6 +268,25 @@ ns3::NetDeviceContainer install_wifi(const Options& options, const ns3::NodeCont
   return wifi.Install(phy, mac, nodes);
 }
 
+// NeighborCacheHelper marks its entries auto-generated, and ns-3.37's AODV
+// (Neighbors::LookupMacAddress) only takes the MAC address of an entry that is alive or
+// permanent: with auto-generated entries every neighbour keeps the null MAC address, the MAC's
+// DroppedMpdu reports match no neighbour, and AODV loses its layer-2 link-break detection,
+// which it has in any run where ARP resolved the neighbour (entries alive for 120 s). Permanent
+// entries give it back and change nothing else: ARP sends to permanent and auto-generated
+// entries alike, and neither expires.
+void make_arp_entries_permanent(const ns3::NodeContainer& nodes,
+                                const ns3::Ipv4InterfaceContainer& interfaces) {
+  for (std::uint32_t i = 0; i < nodes.GetN(); ++i) {
+    ns3::Ptr<ns3::Ipv4L3Protocol> ip = nodes.Get(i)->GetObject<ns3::Ipv4L3Protocol>();
+    const ns3::Ptr<ns3::ArpCache> cache = ip->GetInterface(interfaces.Get(i).second)->GetArpCache();
+    for (std::uint32_t j = 0; j < interfaces.GetN(); ++j) {
+      ns3::ArpCache::Entry* entry = cache->Lookup(interfaces.GetAddress(j));
+      if (entry != nullptr && entry->IsAutoGenerated()) entry->MarkPermanent();
+    }
+  }
+}
+
 nlohmann::ordered_json run(const Options& options) {
   const std::string mobility_path = options.run_dir + "/mobility.ns2";
   const std::string traffic_path = options.run_dir + "/traffic.csv";
@@ -245,9 +309,9 @@ nlohmann::ordered_json run(const Options& options) {
   ns3::RngSeedManager::SetSeed(1);
   ns3::RngSeedManager::SetRun(options.seed);
   if (options.queue_packets > 0) {
-    ns3::Config::SetDefault("ns3::WifiMacQueue::MaxSize",
-                            ns3::QueueSizeValue(ns3::QueueSize(
-                                ns3::QueueSizeUnit::PACKETS, options.queue_packets)));
+    ns3::Config::SetDefault(
+        "ns3::WifiMacQueue::MaxSize",
+        ns3::QueueSizeValue(ns3::QueueSize(ns3::QueueSizeUnit::PACKETS, options.queue_packets)));
   }
   if (options.queue_max_delay_s > 0.0) {
     ns3::Config::SetDefault("ns3::WifiMacQueue::MaxDelay",
@@ -269,6 +333,7 @@ nlohmann::ordered_json run(const Options& options) {
   // No ARP exchange: SwarmNet has none, and ns-3's ARP would add frames and drop packets queued
   // behind a pending resolution.
   ns3::NeighborCacheHelper().PopulateNeighborCache();
+  if (options.arp_entries == "permanent") make_arp_entries_permanent(nodes, interfaces);
 
   std::int64_t stream = 1000;
   stream += ns3::WifiHelper().AssignStreams(devices, stream);
@@ -276,7 +341,8 @@ nlohmann::ordered_json run(const Options& options) {
 
   sv::ReplayMetrics metrics(messages);
   sv::ReplayWorld world{messages, metrics, {}, 9};
-  for (std::uint32_t i = 0; i < node_count; ++i) world.addresses.push_back(interfaces.GetAddress(i));
+  for (std::uint32_t i = 0; i < node_count; ++i)
+    world.addresses.push_back(interfaces.GetAddress(i));
   sv::FloodingCounters flooding_counters;
   std::vector<std::unique_ptr<sv::ReplayEndpoint>> endpoints;
   for (std::uint32_t i = 0; i < node_count; ++i) {
@@ -296,18 +362,17 @@ nlohmann::ordered_json run(const Options& options) {
                                         [endpoint, index]() { endpoint->send(index); });
   }
 
-  ns3::Config::ConnectWithoutContext(
-      "/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Phy/PhyTxBegin",
-      ns3::MakeCallback(&on_phy_tx_begin));
-  ns3::Config::ConnectWithoutContext(
-      "/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Phy/PhyRxDrop",
-      ns3::MakeCallback(&on_phy_rx_drop));
+  ns3::Config::ConnectWithoutContext("/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Phy/PhyTxBegin",
+                                     ns3::MakeCallback(&on_phy_tx_begin));
+  ns3::Config::ConnectWithoutContext("/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Phy/PhyRxDrop",
+                                     ns3::MakeCallback(&on_phy_rx_drop));
   ns3::Config::ConnectWithoutContext(
       "/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Phy/State/RxError",
       ns3::MakeCallback(&on_phy_rx_error));
-  ns3::Config::ConnectWithoutContext(
-      "/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Mac/MacTxDrop",
-      ns3::MakeCallback(&on_mac_tx_drop));
+  ns3::Config::ConnectWithoutContext("/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Mac/MacTxDrop",
+                                     ns3::MakeCallback(&on_mac_tx_drop));
+  ns3::Config::ConnectWithoutContext("/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Mac/DroppedMpdu",
+                                     ns3::MakeCallback(&on_dropped_mpdu));
   ns3::Config::ConnectWithoutContext("/NodeList/*/$ns3::Ipv4L3Protocol/Tx",
                                      ns3::MakeCallback(&on_ip_tx));
   ns3::Config::ConnectWithoutContext("/NodeList/*/$ns3::Ipv4L3Protocol/UnicastForward",
@@ -332,18 +397,33 @@ nlohmann::ordered_json run(const Options& options) {
   out["sim_time_s"] = duration_s;
   const Json measures = metrics.report();
   for (const auto& [key, value] : measures.items()) out[key] = value;
-  out["mac"] = {{"tx_frames", g_mac.tx_frames},       {"data_frames", g_mac.data_frames},
-                {"ack_frames", g_mac.ack_frames},     {"other_frames", g_mac.other_frames},
-                {"retries", g_mac.retries},           {"rx_errors", g_mac.rx_errors},
-                {"tx_drops", g_mac.tx_drops},         {"rx_drops", g_mac.rx_drops}};
+  out["mac"] = {{"tx_frames", g_mac.tx_frames},
+                {"data_frames", g_mac.data_frames},
+                {"ack_frames", g_mac.ack_frames},
+                {"other_frames", g_mac.other_frames},
+                {"retries", g_mac.retries},
+                {"rx_errors", g_mac.rx_errors},
+                {"tx_drops", g_mac.tx_drops},
+                {"rx_drops", g_mac.rx_drops},
+                {"dropped_unicast_mpdus", g_mac.dropped_mpdus}};
   if (options.routing == "aodv") {
+    nlohmann::ordered_json by_ttl = nlohmann::ordered_json::object();
+    for (const auto& [ttl, count] : g_routing.rreq_originated_by_ttl) {
+      by_ttl[std::to_string(ttl)] = count;
+    }
     const std::uint64_t control =
         g_routing.rreq + g_routing.rrep + g_routing.hello + g_routing.rerr + g_routing.rrep_ack;
-    out["routing"] = {{"control_packets", control}, {"control_bytes", g_routing.control_bytes},
-                      {"rreq", g_routing.rreq},     {"rrep", g_routing.rrep},
-                      {"hello", g_routing.hello},   {"rerr", g_routing.rerr},
+    out["routing"] = {{"control_packets", control},
+                      {"control_bytes", g_routing.control_bytes},
+                      {"rreq", g_routing.rreq},
+                      {"rrep", g_routing.rrep},
+                      {"hello", g_routing.hello},
+                      {"rerr", g_routing.rerr},
                       {"rrep_ack", g_routing.rrep_ack},
-                      {"data_forwards", g_routing.data_forwards}};
+                      {"data_forwards", g_routing.data_forwards},
+                      {"rreq_originated", g_routing.rreq_originated},
+                      {"rreq_originated_by_ttl", by_ttl},
+                      {"rerr_broadcast", g_routing.rerr_broadcast}};
   } else if (options.routing == "flooding") {
     out["routing"] = {{"control_packets", 0},
                       {"data_forwards", flooding_counters.forwards},
@@ -367,6 +447,7 @@ nlohmann::ordered_json run(const Options& options) {
                        {"noise_figure_db", options.noise_figure_db},
                        {"error_model", options.error_model},
                        {"rts_threshold_bytes", options.rts_threshold_bytes},
+                       {"arp_entries", options.arp_entries},
                        {"flooding_ttl", options.flooding.ttl},
                        {"flooding_jitter_max_s", options.flooding.jitter_max_s},
                        {"flooding_cache_size", options.flooding.cache_size}};
@@ -377,8 +458,9 @@ nlohmann::ordered_json run(const Options& options) {
 
 int main(int argc, char** argv) {
   Options options;
-  CLI::App app{"Replays a SwarmNet run's mobility trace and traffic schedule in ns-3.37 "
-               "(802.11a at 6 Mbps, log-distance propagation) and writes its measures as JSON"};
+  CLI::App app{
+      "Replays a SwarmNet run's mobility trace and traffic schedule in ns-3.37 "
+      "(802.11a at 6 Mbps, log-distance propagation) and writes its measures as JSON"};
   app.add_option("run_dir", options.run_dir,
                  "SwarmNet run directory: mobility.ns2, traffic.csv (and summary.json)")
       ->required()
@@ -420,6 +502,11 @@ int main(int argc, char** argv) {
                  "WifiMacQueue MaxSize in packets (0: ns-3's default, 500)");
   app.add_option("--queue-max-delay-s", options.queue_max_delay_s,
                  "WifiMacQueue MaxDelay (0: ns-3's default, 0.5 s)");
+  app.add_option("--arp-entries", options.arp_entries,
+                 "state of the ARP entries filled in advance (auto-generated: ns-3's AODV gets "
+                 "no layer-2 link-break feedback)")
+      ->check(CLI::IsMember({"permanent", "auto-generated"}))
+      ->capture_default_str();
   app.add_option("--flooding-ttl", options.flooding.ttl, "flooding: hops a packet may travel")
       ->check(CLI::Range(1, 255))
       ->capture_default_str();

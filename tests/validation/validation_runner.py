@@ -32,9 +32,18 @@ DISK_NETWORK = {
 }
 
 
+# ns-3.37's AODV gets no layer-2 feedback in the replay: NeighborCacheHelper's ARP entries are
+# auto-generated, and its neighbour table only maps a neighbour to a MAC address from an entry
+# that is alive or permanent, so no dropped frame is ever matched to a neighbour (the replay's
+# --arp-entries permanent gives the feedback back). SwarmNet's AODV is compared like for like.
+AODV = {"link_layer_feedback": False}
+
+
 def routing_choice(routing):
     if routing == "flooding":
         return {"plugin": "flooding", "params": dict(FLOODING)}
+    if routing == "aodv":
+        return {"plugin": "aodv", "params": dict(AODV)}
     return {"plugin": routing}
 
 

@@ -18,6 +18,14 @@ std::uint32_t to_ms(SimTime duration) {
 
 SimTime from_ms(std::uint32_t ms) { return std::chrono::milliseconds(ms); }
 
+// A delay of a whole number of milliseconds drawn uniformly from [0, largest] (ns-3.37 draws
+// its AODV jitters as UniformRandomVariable::GetInteger(0, 10) ms and its first HELLO as
+// GetInteger(0, 100) ms: two nodes that draw the same millisecond transmit together).
+SimTime whole_ms_up_to(RandomStream& random, SimTime largest) {
+  const auto slots = std::chrono::duration_cast<std::chrono::milliseconds>(largest).count() + 1;
+  return std::chrono::milliseconds(random.below(static_cast<std::uint64_t>(slots)));
+}
+
 const char* counter_name(const Message& message) {
   if (std::holds_alternative<Rreq>(message)) return "control_rreq";
   if (const auto* rrep = std::get_if<Rrep>(&message)) {
@@ -52,15 +60,22 @@ PluginInfo Aodv::info() {
       "destination when gratuitous_reply is set. Routes carry destination sequence numbers, hop "
       "counts, lifetimes and precursor lists; fresher information (higher sequence number, or "
       "equal and fewer hops) replaces older, never the reverse. HELLOs (a RREP about oneself, "
-      "every hello_interval_s, TTL 1) maintain neighbours; allowed_hello_loss missed HELLOs or a "
-      "MAC's link_failed() report breaks the link: routes through it are invalidated with their "
+      "every hello_interval_s, TTL 1; only a RREQ sent or relayed in the interval stands in for "
+      "one) maintain neighbours, as do RREQs heard and data forwarded or delivered (ns-3: "
+      "forwarding keeps both neighbours alive); allowed_hello_loss missed HELLOs or, with "
+      "link_layer_feedback, a MAC's link_failed() report breaks the link: routes through it are "
+      "invalidated with their "
       "sequence number incremented, and a RERR goes to the precursors (unicast to a single one, "
       "broadcast otherwise), which do the same. RREQs and RERRs are rate-limited per second; "
-      "broadcast control packets wait a random jitter of up to broadcast_jitter_max_s drawn "
-      "from the node's stream. A RREP sent with the A flag (for a neighbour's route, as in ns-3, "
-      "or always with rrep_ack_required) must be acknowledged with a RREP-ACK within "
-      "next_hop_wait_s, and a RREP the MAC could not deliver likewise, or the neighbour is "
-      "blacklisted (its RREQs ignored) for blacklist_timeout_s. Optional local repair "
+      "broadcast control packets wait a random jitter of a whole number of milliseconds up to "
+      "broadcast_jitter_max_s drawn from the node's stream (the first HELLO likewise, up to "
+      "hello_start_jitter_max_s). A unicast control message goes to its neighbour over a valid "
+      "route to it (refreshing it); without one it waits in the buffer while a RREQ searches for "
+      "that neighbour, as ns-3's IP routing of AODV's own messages does. A RREP answering for a "
+      "neighbour carries the A flag (as in ns-3, which never starts the RREP-ACK timer); with "
+      "rrep_ack_required every RREP must be acknowledged with a RREP-ACK within next_hop_wait_s "
+      "or the neighbour is blacklisted (its RREQs ignored) for blacklist_timeout_s. Optional "
+      "local repair "
       "(enable_local_repair): a node that loses the next hop of a forwarded packet within "
       "0.3 * net_diameter hops of the destination buffers it and searches once with TTL "
       "max(route hops, hops from source / 2) + local_add_ttl before reporting the break. "
@@ -74,8 +89,7 @@ PluginInfo Aodv::info() {
       "Departures from ns-3, all from RFC 3561: every route update follows section 6.2 (ns-3 "
       "overwrites reverse routes unconditionally); a destination sets its sequence number to "
       "the maximum of its own and the RREQ's (6.6.1); link breaks increment the sequence numbers "
-      "they report (6.11); neighbours are refreshed by what is heard from them, not by what is "
-      "sent to them; the RREP-ACK timer is armed (ns-3 never starts it).",
+      "they report (6.11), and so do expiring routes.",
       parameter_schema()};
 }
 
@@ -92,9 +106,8 @@ void Aodv::attach(RoutingContext& context) {
   context_ = &context;
   self_ = context.node();
   if (params_.enable_hello) {
-    const SimTime start =
-        from_seconds(random_.uniform(0.0, to_seconds(params_.hello_start_jitter_max)));
-    context_->schedule(start, [this] { hello_timer_expired(); });
+    context_->schedule(whole_ms_up_to(random_, params_.hello_start_jitter_max),
+                       [this] { hello_timer_expired(); });
     context_->schedule(params_.hello_interval, [this] { check_neighbors(); });
   }
 }
@@ -122,14 +135,15 @@ void Aodv::send(Packet packet) {
 }
 
 void Aodv::receive(Packet packet, NodeId from) {
-  if (params_.enable_hello) neighbors_.update(from, params_.hello_lifetime(), now());
   if (!packet.is_control()) {
     if (packet.destination == kBroadcast) {
       deliver_broadcast(std::move(packet));
     } else if (packet.destination == self_) {
       table_.refresh(packet.source, params_.active_route_timeout, now());
       if (const RouteEntry* to_origin = table_.find_valid(packet.source, now())) {
-        table_.refresh(to_origin->next_hop, params_.active_route_timeout, now());
+        const NodeId previous_hop = to_origin->next_hop;
+        table_.refresh(previous_hop, params_.active_route_timeout, now());
+        neighbors_.update(previous_hop, params_.active_route_timeout, now());
       }
       context_->deliver(packet);
     } else {
@@ -177,8 +191,12 @@ void Aodv::forward_data(Packet packet) {
     const RouteEntry to_destination = *route;
     // RFC 3561 6.2: using a route keeps it, its next hop, the source and the previous hop alive.
     table_.refresh(packet.source, params_.active_route_timeout, t);
-    if (const RouteEntry* to_origin = table_.find_valid(packet.source, t)) {
+    // ns-3.37 (Forwarding) also keeps both neighbours alive: a relay does not learn from
+    // forwarding that its next hop has gone (only HELLO loss or the MAC tells it).
+    neighbors_.update(to_destination.next_hop, params_.active_route_timeout, t);
+    if (const RouteEntry* to_origin = table_.find(packet.source, t)) {
       table_.refresh(to_origin->next_hop, params_.active_route_timeout, t);
+      neighbors_.update(to_origin->next_hop, params_.active_route_timeout, t);
     }
     transmit_data(std::move(packet), to_destination);
     return;
@@ -231,7 +249,11 @@ void Aodv::send_queued(NodeId destination) {
       continue;
     }
     const RouteEntry copy = *route;
-    transmit_data(std::move(packet), copy);
+    if (packet.is_control()) {
+      transmit_control(std::move(packet), copy);
+    } else {
+      transmit_data(std::move(packet), copy);
+    }
   }
 }
 
@@ -424,6 +446,7 @@ void Aodv::receive_request(const Rreq& received, NodeId from) {
     return;
   }
   update_route_to_neighbor(from);
+  neighbors_.update(from, params_.hello_lifetime(), t);
   Rreq rreq = received;
   const std::uint32_t hops = std::uint32_t{rreq.hop_count} + 1;
   rreq.hop_count = static_cast<std::uint8_t>(std::min(hops, kMaxHopCount));
@@ -638,7 +661,9 @@ void Aodv::reply_as_intermediate(const Rreq& rreq, RouteEntry& to_destination,
 void Aodv::send_reply(const Rrep& rrep, NodeId next_hop) {
   Rrep out = rrep;
   out.ack_required = out.ack_required || params_.rrep_ack_required;
-  if (out.ack_required && !ack_timers_.contains(next_hop)) {
+  // ns-3.37 sets the A flag when it answers for a neighbour but never starts the RREP-ACK timer,
+  // so it never blacklists: only rrep_ack_required arms it.
+  if (params_.rrep_ack_required && !ack_timers_.contains(next_hop)) {
     ack_timers_[next_hop] = context_->schedule(params_.next_hop_wait, [this, next_hop] {
       ack_timers_.erase(next_hop);
       table_.blacklist(next_hop, now() + params_.blacklist_timeout);
@@ -677,12 +702,39 @@ void Aodv::send_error(const Rerr& rerr, const std::vector<NodeId>& precursors) {
 void Aodv::send_control(const Message& message, NodeId next_hop) {
   Packet packet = context_->make_control_packet(next_hop);
   encode(message, packet.header);
-  context_->count(counter_name(message));
-  context_->send_to_mac(std::move(packet), next_hop);
+  if (next_hop == kBroadcast) {
+    context_->count(counter_name(message));
+    context_->send_to_mac(std::move(packet), kBroadcast);
+    return;
+  }
+  // ns-3.37 sends a unicast control message to a neighbour through its IP stack, whose route
+  // lookup is AODV's own (RouteOutput): a valid route to the neighbour is used and refreshed like
+  // any other; without one the message waits in the request queue while a RREQ searches for the
+  // neighbour (on the dense grid row most of ns-3's discoveries are such searches).
+  if (const RouteEntry* route = table_.find_valid(next_hop, now())) {
+    const RouteEntry copy = *route;
+    transmit_control(std::move(packet), copy);
+    return;
+  }
+  buffer(std::move(packet));
+  if (!discovery_timers_.contains(next_hop)) send_request(next_hop);
+}
+
+void Aodv::transmit_control(Packet packet, const RouteEntry& route) {
+  table_.refresh(route.destination, params_.active_route_timeout, now());
+  table_.refresh(route.next_hop, params_.active_route_timeout, now());
+  if (const std::optional<Message> message = decode(packet.header)) {
+    context_->count(counter_name(*message));
+  }
+  // The message is for the neighbour itself: it goes to it directly even when its route now
+  // leads through another node (ns-3 would relay the datagram; it is rare).
+  const NodeId neighbor = packet.destination;
+  context_->send_to_mac(std::move(packet), neighbor);
 }
 
 void Aodv::broadcast_control(const Message& message) {
-  last_broadcast_ = now();
+  // ns-3.37 notes a broadcast for the HELLO rule only when it sends or relays a RREQ.
+  if (std::holds_alternative<Rreq>(message)) last_broadcast_ = now();
   context_->schedule(jitter(), [this, message] { send_control(message, kBroadcast); });
 }
 
@@ -690,14 +742,7 @@ void Aodv::broadcast_control(const Message& message) {
 
 void Aodv::link_failed(const Packet& packet, NodeId next_hop) {
   context_->count("link_failures");
-  if (packet.is_control()) {
-    // RFC 3561 6.8: a RREP that could not be delivered marks the link as unidirectional.
-    const std::optional<Message> message = decode(packet.header);
-    if (message && std::holds_alternative<Rrep>(*message) && !std::get<Rrep>(*message).is_hello()) {
-      table_.blacklist(next_hop, now() + params_.blacklist_timeout);
-      context_->count("blacklisted");
-    }
-  }
+  if (!params_.link_layer_feedback) return;
   neighbors_.close(next_hop);
   bool seen = false;
   for (const NodeId broken : neighbors_.purge(now())) {
@@ -770,9 +815,7 @@ SimTime Aodv::next_rate_window() const {
   return kRateWindow * (now().count() / kRateWindow.count() + 1);
 }
 
-SimTime Aodv::jitter() {
-  return from_seconds(random_.uniform(0.0, to_seconds(params_.broadcast_jitter_max)));
-}
+SimTime Aodv::jitter() { return whole_ms_up_to(random_, params_.broadcast_jitter_max); }
 
 }  // namespace swarmnet::aodv
 

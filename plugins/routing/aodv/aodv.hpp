@@ -78,6 +78,7 @@ class Aodv final : public Routing {
   void send_hello();
   void send_error(const Rerr& rerr, const std::vector<NodeId>& precursors);
   void send_control(const Message& message, NodeId next_hop);
+  void transmit_control(Packet packet, const RouteEntry& route);
   void broadcast_control(const Message& message);
 
   // Link breakage (RFC 3561 section 6.11).

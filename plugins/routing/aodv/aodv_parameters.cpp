@@ -80,6 +80,8 @@ std::vector<ParamSpec> parameter_schema() {
                  "RREQs carry the G flag: an intermediate node that replies also sends a RREP to "
                  "the destination"),
       bool_param("enable_hello", true, "send HELLO messages and detect broken links by their loss"),
+      bool_param("link_layer_feedback", true,
+                 "take the MAC's report of an unacknowledged frame (link_failed) as a broken link"),
       bool_param("enable_broadcast", true,
                  "rebroadcast application broadcasts (with duplicate detection and data_ttl)"),
       bool_param("enable_local_repair", false,
@@ -129,6 +131,7 @@ AodvParameters parameters_from(const ParamSet& params) {
   p.destination_only = params.boolean("destination_only");
   p.gratuitous_reply = params.boolean("gratuitous_reply");
   p.enable_hello = params.boolean("enable_hello");
+  p.link_layer_feedback = params.boolean("link_layer_feedback");
   p.enable_broadcast = params.boolean("enable_broadcast");
   p.enable_local_repair = params.boolean("enable_local_repair");
   p.local_add_ttl = count_param(params, "local_add_ttl");

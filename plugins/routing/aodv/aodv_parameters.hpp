@@ -34,6 +34,7 @@ struct AodvParameters {
   bool destination_only = false;
   bool gratuitous_reply = true;
   bool enable_hello = true;
+  bool link_layer_feedback = true;
   bool enable_broadcast = true;
   bool enable_local_repair = false;
   std::uint32_t local_add_ttl = 2;
