@@ -90,9 +90,7 @@ bool Phy::medium_busy() const {
   // 4 us preamble-detection window is not sensed yet (the "4 us CCA window").
   double sensed_mw = 0.0;
   for (const Arrival& a : arrivals_) {
-    if (std::find(candidates_.begin(), candidates_.end(), a.frame_uid) == candidates_.end()) {
-      sensed_mw += a.rx_power_mw;
-    }
+    if (!a.in_window) sensed_mw += a.rx_power_mw;
   }
   return sensed_mw > 0.0 && (sensed_mw >= cca_threshold_mw_ || sensed_mw >= energy_detection_mw_);
 }
@@ -172,7 +170,12 @@ void Phy::start_transmission() {
     if (detection_timer_ != kNoTimer) scheduler_->cancel(detection_timer_);
     detection_timer_ = kNoTimer;
     candidates_.clear();
+    leave_window();
   }
+}
+
+void Phy::leave_window() {
+  for (Arrival& a : arrivals_) a.in_window = false;
 }
 
 void Phy::end_transmission() {
@@ -193,6 +196,7 @@ void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm) {
     note_interference_change();
   } else if (!transmitting_) {
     candidates_.push_back(frame_uid);
+    arrivals_.back().in_window = true;
     if (detection_timer_ == kNoTimer) {
       detection_timer_ = scheduler_->schedule_in_lane(detection_lane_, [this] {
         detection_timer_ = kNoTimer;
@@ -208,6 +212,7 @@ void Phy::end_detection_window() {
   // window allocates nothing, and signals starting during detection go to a fresh candidates_.
   window_.clear();
   window_.swap(candidates_);
+  leave_window();
   if (transmitting_ || lock_) return;
   detect_preamble(window_);
   // Detected (locked) or not, the window's signals are sensed from now on.

@@ -151,7 +151,9 @@ class Phy {
     double rx_power_dbm;
     double rx_power_mw = 0.0;
     SimTime start{};
+    bool in_window = false;  // among candidates_: not carrier-sensed yet
   };
+  void leave_window();  // every arrival's in_window cleared (candidates_ emptied or swapped)
   // sinr: the frame the PHY is locked on, and the interference it has seen since.
   struct Lock {
     std::uint64_t frame_uid;
