@@ -66,10 +66,14 @@ std::vector<std::string> validate_runs(const SweepSpec& spec, const std::vector<
       for (const auto& line : error.problems()) {
         std::string where = "run " + run.id;
         for (std::size_t a = 0; a < spec.axes.size(); ++a) {
-          const auto& value = spec.axes[a].values[run.value[a]];
-          if (line.starts_with("--set " + spec.axes[a].key + ":") ||
-              line.starts_with("--set " + spec.axes[a].key + " ")) {
-            where = value.location + ": grid " + spec.axes[a].key + "=" + value.text;
+          const SweepAxis& axis = spec.axes[a];
+          for (std::size_t k = 0; k < axis.keys.size(); ++k) {
+            const auto& value = axis.points[run.point[a]].values[k];
+            if (line.starts_with("--set " + axis.keys[k] + ":") ||
+                line.starts_with("--set " + axis.keys[k] + " ")) {
+              where = value.location + ": grid " + (axis.linked ? axis.name + ": " : "") +
+                      axis.keys[k] + "=" + value.text;
+            }
           }
         }
         for (const auto& [option, place] : origin) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "text_join.hpp"
@@ -99,9 +100,173 @@ std::uint64_t read_seed(const YAML::Node& node, Problems& problems, const std::s
   return 0;
 }
 
+// A name for a linked axis: a word, so that it cannot be mistaken for a key path.
+bool valid_axis_name(const std::string& name) {
+  return !name.empty() && std::ranges::all_of(name, [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-';
+  });
+}
+
+// The values of one swept key; empty (with a problem added) unless `values` is a non-empty list.
+std::vector<SweepValue> read_values(const YAML::Node& values, const std::string& where,
+                                    Problems& problems) {
+  std::vector<SweepValue> read;
+  if (!values.IsSequence() || values.size() == 0) {
+    problems.add(values, where, "not a non-empty list", "[value, value, ...]");
+    return read;
+  }
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    read.push_back({flow_text(values[i]), id_part(values[i], i), problems.locate(values[i])});
+  }
+  return read;
+}
+
+// Run ids are made of the points' id parts, so two points of an axis must not share one.
+void check_distinct_ids(const SweepAxis& axis, const YAML::Node& values, const std::string& where,
+                        Problems& problems) {
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < axis.points.size(); ++i) {
+    if (!seen.insert(axis.points[i].id_part()).second) {
+      problems.add(values[i], where,
+                   "value " + axis.points[i].values.front().text +
+                       " gives the same run id as an earlier one",
+                   axis.linked ? "distinct values of the first key, which names the runs"
+                               : "distinct values");
+    }
+  }
+}
+
+// `key: [v1, v2, ...]`: one key, one point per value.
+std::optional<SweepAxis> read_plain_axis(const YAML::Node& key_node, const YAML::Node& values,
+                                         Problems& problems) {
+  const std::string key = key_node.as<std::string>();
+  if (!valid_key(key)) {
+    problems.add(key_node, "grid." + key, "not a key path", "a.b.c");
+    return std::nullopt;
+  }
+  auto read = read_values(values, "grid." + key, problems);
+  if (read.empty()) return std::nullopt;
+  SweepAxis axis;
+  axis.name = short_name(key);
+  axis.keys = {key};
+  for (auto& value : read) axis.points.push_back({{std::move(value)}});
+  check_distinct_ids(axis, values, "grid." + key, problems);
+  return axis;
+}
+
+// `name: {key: [...], key: [...]}`: several keys that vary together. Every list has as many values
+// as the first, and the i-th values of all keys make the i-th point.
+std::optional<SweepAxis> read_linked_axis(const YAML::Node& name_node, const YAML::Node& keys,
+                                          Problems& problems) {
+  const std::string name = name_node.as<std::string>();
+  const std::string where = "grid." + name;
+  constexpr const char* kLinkedForm =
+      "a linked axis, name: {key path: [values], key path: [values], ...} with a word "
+      "(letters, digits, _ or -) as its name";
+  if (!valid_axis_name(name)) {
+    problems.add(name_node, where, "a mapping here is a linked axis, which needs a name",
+                 kLinkedForm);
+    return std::nullopt;
+  }
+  if (name == "seed") {
+    problems.add(name_node, where, "seed names the seed in run ids", "another name");
+    return std::nullopt;
+  }
+  if (keys.size() == 0) {
+    problems.add(keys, where, "an empty linked axis", kLinkedForm);
+    return std::nullopt;
+  }
+  SweepAxis axis;
+  axis.name = name;
+  axis.linked = true;
+  std::vector<std::vector<SweepValue>> columns;
+  YAML::Node first_values;
+  bool ok = true;
+  for (const auto& entry : keys) {
+    const std::string key = entry.first.as<std::string>();
+    if (!valid_key(key)) {
+      problems.add(entry.first, where + "." + key, "not a key path", "a.b.c");
+      ok = false;
+      continue;
+    }
+    auto read = read_values(entry.second, where + "." + key, problems);
+    if (read.empty()) {
+      ok = false;
+      continue;
+    }
+    if (columns.empty()) {
+      first_values = entry.second;
+    } else if (read.size() != columns.front().size()) {
+      problems.add(entry.second, where + "." + key,
+                   std::to_string(read.size()) + (read.size() == 1 ? " value" : " values") +
+                       " where " + axis.keys.front() + " has " +
+                       std::to_string(columns.front().size()),
+                   "one value per point: every key of a linked axis has as many values");
+      ok = false;
+      continue;
+    }
+    axis.keys.push_back(key);
+    columns.push_back(std::move(read));
+  }
+  if (!ok || columns.empty()) return std::nullopt;
+  for (std::size_t i = 0; i < columns.front().size(); ++i) {
+    SweepPoint point;
+    for (auto& column : columns) point.values.push_back(std::move(column[i]));
+    axis.points.push_back(std::move(point));
+  }
+  check_distinct_ids(axis, first_values, where + "." + axis.keys.front(), problems);
+  return axis;
+}
+
+// A key may be set once: under set, or on one axis.
+void check_each_key_once(const SweepSpec& spec, Problems& problems) {
+  std::map<std::string, std::string> owner;  // key -> where it was given first
+  for (const auto& fixed : spec.fixed) owner.emplace(fixed.key, "set");
+  for (const auto& axis : spec.axes) {
+    for (std::size_t k = 0; k < axis.keys.size(); ++k) {
+      const std::string& key = axis.keys[k];
+      const std::string here = axis.linked ? "grid." + axis.name : "grid";
+      const auto [it, added] = owner.emplace(key, here);
+      if (added) continue;
+      // Located at the key's first value: the axis's own node is not kept.
+      const std::string what =
+          it->second == "set" ? "also given under set" : "also given under " + it->second;
+      problems.add_line(axis.points.front().values[k].location + ": " + here + "." + key + ": " +
+                        what + "; expected each key once");
+    }
+  }
+}
+
+// Plain axes go by their key's short name unless another axis has it too (or it is "seed", which
+// run ids already use); then by the whole key path with '-' for '.'.
+void name_axes(std::vector<SweepAxis>& axes, Problems& problems) {
+  for (auto& axis : axes) {
+    if (axis.linked) continue;
+    const auto clashes = std::ranges::count_if(axes, [&](const SweepAxis& other) {
+      return (other.linked ? other.name : short_name(other.keys.front())) == axis.name;
+    });
+    if (clashes > 1 || axis.name == "seed") {
+      axis.name = axis.keys.front();
+      std::ranges::replace(axis.name, '.', '-');
+    }
+  }
+  for (std::size_t a = 0; a < axes.size(); ++a) {
+    for (std::size_t b = 0; b < a; ++b) {
+      if (axes[a].linked && axes[b].linked && axes[a].name == axes[b].name) {
+        problems.add_line(axes[a].points.front().values.front().location + ": grid." +
+                          axes[a].name +
+                          ": a second linked axis of that name; expected "
+                          "distinct names");
+      }
+    }
+  }
+}
+
 constexpr const char* kForm =
     "keys base (scenario file), out (directory), set (key path: value), grid (key path: list of "
-    "values), seeds (list of integers, or {first: N, count: M})";
+    "values, or name: {key path: list, ...} for keys that vary together), seeds (list of "
+    "integers, or {first: N, count: M})";
 
 }  // namespace
 
@@ -179,46 +344,13 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
                  "key path: list of values, e.g. robots.count: [25, 50]");
   } else {
     for (const auto& entry : grid) {
-      const std::string key = entry.first.as<std::string>();
-      if (!valid_key(key)) {
-        problems.add(entry.first, "grid." + key, "not a key path", "a.b.c");
-        continue;
-      }
-      const YAML::Node values = entry.second;
-      if (!values.IsSequence() || values.size() == 0) {
-        problems.add(values, "grid." + key, "not a non-empty list", "[value, value, ...]");
-        continue;
-      }
-      SweepAxis axis;
-      axis.key = key;
-      axis.name = short_name(key);
-      std::set<std::string> seen;
-      for (std::size_t i = 0; i < values.size(); ++i) {
-        SweepValue value{flow_text(values[i]), id_part(values[i], i), problems.locate(values[i])};
-        if (!seen.insert(value.id_part).second) {
-          problems.add(values[i], "grid." + key,
-                       "value " + value.text + " gives the same run id as an earlier one",
-                       "distinct values");
-        }
-        axis.values.push_back(std::move(value));
-      }
-      for (const auto& fixed : spec.fixed) {
-        if (fixed.key == key) {
-          problems.add(entry.first, "grid." + key, "also given under set", "each key once");
-        }
-      }
-      spec.axes.push_back(std::move(axis));
+      auto axis = entry.second.IsMap() ? read_linked_axis(entry.first, entry.second, problems)
+                                       : read_plain_axis(entry.first, entry.second, problems);
+      if (axis) spec.axes.push_back(std::move(*axis));
     }
   }
-  // Short names must tell the axes apart; otherwise the whole key path names the axis.
-  for (auto& axis : spec.axes) {
-    const auto clashes = std::ranges::count_if(
-        spec.axes, [&](const SweepAxis& other) { return short_name(other.key) == axis.name; });
-    if (clashes > 1 || axis.name == "seed") {
-      axis.name = axis.key;
-      std::ranges::replace(axis.name, '.', '-');
-    }
-  }
+  check_each_key_once(spec, problems);
+  name_axes(spec.axes, problems);
 
   const YAML::Node seeds = root["seeds"];
   bool ok = true;
@@ -252,7 +384,7 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
 
 std::vector<SweepRun> SweepSpec::expand() const {
   std::size_t combinations = 1;
-  for (const auto& axis : axes) combinations *= axis.values.size();
+  for (const auto& axis : axes) combinations *= axis.points.size();
   std::vector<SweepRun> runs;
   runs.reserve(combinations * seeds.size());
   std::vector<std::size_t> index(axes.size(), 0);
@@ -260,18 +392,20 @@ std::vector<SweepRun> SweepSpec::expand() const {
     // Mixed-radix digits of c, the last axis varying fastest.
     std::size_t rest = c;
     for (std::size_t a = axes.size(); a-- > 0;) {
-      index[a] = rest % axes[a].values.size();
-      rest /= axes[a].values.size();
+      index[a] = rest % axes[a].points.size();
+      rest /= axes[a].points.size();
     }
     for (const std::uint64_t seed : seeds) {
       SweepRun run;
       run.seed = seed;
-      run.value = index;
+      run.point = index;
       for (const auto& fixed : this->fixed) run.set.push_back(fixed.key + "=" + fixed.text);
       for (std::size_t a = 0; a < axes.size(); ++a) {
-        const SweepValue& value = axes[a].values[index[a]];
-        run.set.push_back(axes[a].key + "=" + value.text);
-        run.id += axes[a].name + "-" + value.id_part + "_";
+        const SweepPoint& point = axes[a].points[index[a]];
+        for (std::size_t k = 0; k < axes[a].keys.size(); ++k) {
+          run.set.push_back(axes[a].keys[k] + "=" + point.values[k].text);
+        }
+        run.id += axes[a].name + "-" + point.id_part() + "_";
       }
       run.id += "seed-" + std::to_string(seed);
       runs.push_back(std::move(run));

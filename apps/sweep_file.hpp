@@ -1,6 +1,7 @@
 // A sweep file (docs/experiments.md): a base scenario, fixed overrides, a grid of overrides whose
-// cartesian product is run, and a list of seeds. Read, checked (every problem at once, as
-// "FILE:LINE:COLUMN: KEY: what is wrong; expected FORM", like a scenario) and expanded into runs.
+// cartesian product is run (each axis one key, or several linked keys that vary together), and a
+// list of seeds. Read, checked (every problem at once, as "FILE:LINE:COLUMN: KEY: what is wrong;
+// expected FORM", like a scenario) and expanded into runs.
 #pragma once
 
 #include <cstdint>
@@ -28,10 +29,21 @@ struct SweepValue {
   std::string location;  // FILE:LINE:COLUMN of the value in the sweep file
 };
 
+// One position along an axis: a value for each of the axis's keys.
+struct SweepPoint {
+  std::vector<SweepValue> values;  // in the order of SweepAxis::keys
+  // The point's part of a run id: its first key's value's id_part.
+  [[nodiscard]] const std::string& id_part() const { return values.front().id_part; }
+};
+
+// A grid axis. A plain axis sweeps one key; a linked axis sweeps several keys together (the i-th
+// values of every key make its i-th point), e.g. robots.count with the arena's size so that the
+// density stays constant.
 struct SweepAxis {
-  std::string key;   // scenario key path, e.g. robots.count
-  std::string name;  // its short name in run ids, e.g. count
-  std::vector<SweepValue> values;
+  std::string name;               // its name in run ids: count, routing, or a linked axis's name
+  std::vector<std::string> keys;  // scenario key paths, e.g. robots.count; one unless linked
+  std::vector<SweepPoint> points;
+  bool linked = false;
 };
 
 struct SweepFixed {
@@ -43,7 +55,7 @@ struct SweepFixed {
 struct SweepRun {
   std::string id;  // e.g. count-50_routing-aodv_seed-3
   std::uint64_t seed = 0;
-  std::vector<std::size_t> value;  // index into each axis's values
+  std::vector<std::size_t> point;  // index into each axis's points
   std::vector<std::string> set;    // --set arguments (fixed ones first, then the grid's)
 };
 

@@ -46,7 +46,9 @@ std::string csv_field(const std::string& text) {
 
 std::string results_csv(const SweepSpec& spec, const std::vector<SweepRunResult>& results) {
   std::vector<std::string> columns = {"run_id", "seed", "status"};
-  for (const auto& axis : spec.axes) columns.push_back(axis.key);
+  for (const auto& axis : spec.axes) {
+    columns.insert(columns.end(), axis.keys.begin(), axis.keys.end());
+  }
   const std::size_t fixed_columns = columns.size();
   std::map<std::string, std::size_t> column_of;
   for (std::size_t i = 0; i < columns.size(); ++i) column_of.emplace(columns[i], i);
@@ -57,9 +59,11 @@ std::string results_csv(const SweepSpec& spec, const std::vector<SweepRunResult>
     row[0] = result.run->id;
     row[1] = std::to_string(result.run->seed);
     row[2] = result.status;
+    std::size_t column = 3;
     for (std::size_t a = 0; a < spec.axes.size(); ++a) {
-      const auto& value = spec.axes[a].values[result.run->value[a]];
-      row[3 + a] = value.text;
+      for (const auto& value : spec.axes[a].points[result.run->point[a]].values) {
+        row[column++] = value.text;
+      }
     }
     std::ifstream in(result.summary);
     if (in) {

@@ -108,6 +108,51 @@ TEST(SweepCommand, ATypoFailsBeforeAnythingRuns) {
   EXPECT_FALSE(std::filesystem::exists(out / "runs"));
 }
 
+// A linked axis: the robot count and the arena's side change together, as one axis.
+TEST(SweepCommand, ALinkedAxisSetsItsKeysTogether) {
+  TempDir dir;
+  auto sweep = dir.path() / "linked.yaml";
+  std::ofstream(sweep) << "base: " << kQuickstart << "\n"
+                       << "set:\n  duration_s: 2\n  arena.obstacles: []\n"
+                       << "grid:\n  size:\n"
+                       << "    robots.count: [5, 8]\n"
+                       << "    arena.width_m: [100, 130]\n"
+                       << "    arena.height_m: [90, 120]\n"
+                       << "seeds: [1]\n";
+  const auto out = dir.path() / "out";
+  const auto result = run_swarmnet("sweep " + sweep.string() + " -j 2 --out " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto summary =
+      nlohmann::json::parse(read_file(out / "runs" / "size-8_seed-1" / "summary.json"));
+  EXPECT_EQ(summary["robots"], 8);
+  const std::string resolved = read_file(out / "runs" / "size-8_seed-1" / "scenario.resolved.yaml");
+  EXPECT_NE(resolved.find("width_m: 130\n"), std::string::npos) << resolved;
+  EXPECT_NE(resolved.find("height_m: 120\n"), std::string::npos) << resolved;
+  const std::string csv = read_file(out / "results.csv");
+  EXPECT_TRUE(csv.starts_with("run_id,seed,status,robots.count,arena.width_m,arena.height_m,"))
+      << csv;
+  EXPECT_NE(csv.find("\nsize-5_seed-1,1,ok,5,100,90,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\nsize-8_seed-1,1,ok,8,130,120,"), std::string::npos) << csv;
+  EXPECT_EQ(count_lines(csv), 3U) << csv;
+}
+
+TEST(SweepCommand, ATypoInALinkedKeyIsLocatedAtItsValue) {
+  TempDir dir;
+  auto sweep = dir.path() / "linked.yaml";
+  std::ofstream(sweep) << "base: " << kQuickstart << "\n"
+                       << "grid:\n  size:\n"
+                       << "    robots.count: [5, 8]\n"
+                       << "    arena.widht_m: [100, 130]\n";
+  const auto out = dir.path() / "out";
+  const auto result = run_swarmnet("sweep " + sweep.string() + " --out " + out.string());
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find(sweep.string() +
+                               ":5:21: grid size: arena.widht_m=100: --set arena.widht_m"),
+            std::string::npos)
+      << result.output;
+  EXPECT_FALSE(std::filesystem::exists(out / "runs"));
+}
+
 // Ctrl-C: no new run starts, the running one stops, finished work and results.csv stay, and the
 // same command later finishes the rest.
 TEST(SweepCommand, SigintStopsTheChildrenAndKeepsWhatFinished) {

@@ -70,6 +70,94 @@ TEST(SweepFile, ReportsEveryProblemWithItsLine) {
   }
 }
 
+TEST(SweepFile, ALinkedAxisVariesItsKeysTogether) {
+  TempDir dir;
+  write(dir, "base.yaml", "name: x\n");
+  const auto file = write(dir, "s.yaml",
+                          "base: base.yaml\n"
+                          "grid:\n"
+                          "  size:\n"
+                          "    robots.count: [25, 50, 100]\n"
+                          "    arena.width_m: [353.6, 500, 707.1]\n"
+                          "    arena.height_m: [353.6, 500, 707.1]\n"
+                          "  network.routing: [{plugin: flooding}, {plugin: aodv}]\n"
+                          "seeds: [1, 2]\n");
+  const SweepSpec spec = load_sweep(file);
+  ASSERT_EQ(spec.axes.size(), 2U);
+  EXPECT_TRUE(spec.axes[0].linked);
+  EXPECT_EQ(spec.axes[0].name, "size");
+  EXPECT_EQ(spec.axes[0].keys,
+            (std::vector<std::string>{"robots.count", "arena.width_m", "arena.height_m"}));
+  EXPECT_EQ(spec.axes[0].points.size(), 3U);
+  EXPECT_FALSE(spec.axes[1].linked);
+  EXPECT_EQ(spec.axes[1].name, "routing");
+  // 3 points x 2 protocols x 2 seeds, not 3 x 3 x 3 x 2 x 2: the linked keys are one axis.
+  const auto runs = spec.expand();
+  ASSERT_EQ(runs.size(), 12U);
+  EXPECT_EQ(runs[0].id, "size-25_routing-flooding_seed-1");
+  EXPECT_EQ(runs[11].id, "size-100_routing-aodv_seed-2");
+  EXPECT_EQ(runs[6].id, "size-50_routing-aodv_seed-1");
+  const std::vector<std::string> set = {"robots.count=50", "arena.width_m=500",
+                                        "arena.height_m=500", "network.routing={plugin: aodv}"};
+  EXPECT_EQ(runs[6].set, set);
+
+  // Every linked key is a column of results.csv, in file order, with the run's value.
+  const std::vector<SweepRunResult> results = {{&runs[6], "not run", dir.path() / "none.json"}};
+  EXPECT_EQ(results_csv(spec, results),
+            "run_id,seed,status,robots.count,arena.width_m,arena.height_m,network.routing\n"
+            "size-50_routing-aodv_seed-1,1,not run,50,500,500,{plugin: aodv}\n");
+}
+
+TEST(SweepFile, ALinkedAxisIsCheckedWithItsLines) {
+  TempDir dir;
+  write(dir, "base.yaml", "name: x\n");
+  const auto file = write(dir, "bad.yaml",
+                          "base: base.yaml\n"
+                          "set:\n"
+                          "  duration_s: 5\n"
+                          "grid:\n"
+                          "  size:\n"
+                          "    robots.count: [25, 50, 25]\n"
+                          "    duration_s: [1, 2, 3]\n"
+                          "  body:\n"
+                          "    robots.radius_m: [0.1, 0.2]\n"
+                          "    robots.axle_m: [0.2]\n"
+                          "  robots.count: [7]\n"
+                          "  arena.size: {width_m: [1]}\n"
+                          "  seed: {robots.max_speed_mps: [1]}\n"
+                          "  empty: {}\n");
+  try {
+    (void)load_sweep(file);
+    FAIL() << "accepted a bad sweep file";
+  } catch (const SweepError& error) {
+    const std::string text = error.what();
+    const std::string name = file.string();
+    EXPECT_NE(text.find(name + ":10:20: grid.body.robots.axle_m: 1 value where robots.radius_m "
+                               "has 2; expected one value per point"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find(name + ":6:28: grid.size.robots.count: value 25 gives the same run id as "
+                               "an earlier one; expected distinct values of the first key"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find(name + ":7:18: grid.size.duration_s: also given under set"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find(name + ":11:18: grid.robots.count: also given under grid.size"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find(name + ":12:3: grid.arena.size: a mapping here is a linked axis, which "
+                               "needs a name; expected a linked axis, name: {key path: [values]"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find(name + ":13:3: grid.seed: seed names the seed in run ids"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find(name + ":14:10: grid.empty: an empty linked axis"), std::string::npos)
+        << text;
+  }
+}
+
 TEST(SweepResults, FlattensSummariesIntoStableColumns) {
   TempDir dir;
   write(dir, "base.yaml", "name: x\n");
