@@ -38,6 +38,8 @@ struct Options {
   std::string run_dir;
   std::string output;
   std::string routing = "direct";
+  std::string frame_trace;     // CSV of every frame put on the air (empty: none)
+  std::string delivery_trace;  // CSV of every message's injection and first delivery
   double duration_s = 0.0;  // 0: summary.json's sim_time_s
   std::uint32_t seed = 1;
   // Propagation and PHY.
@@ -93,6 +95,72 @@ MacCounters g_mac;
 RoutingCounters g_routing;
 constexpr std::uint16_t kAodvPort = 654;
 constexpr const char* kSubnetMask = "255.255.0.0";
+
+// The per-frame trace (--frame-trace): one line per PhyTxBegin, so that a run can be compared
+// frame by frame with SwarmNet's.
+struct FrameTrace {
+  std::ofstream out;
+  std::map<ns3::Mac48Address, std::uint32_t> node_of;  // MAC address -> node id
+  const std::vector<sv::TrafficMessage>* messages = nullptr;
+  std::size_t payload_offset = 0;  // bytes of the routing header before the message index
+};
+FrameTrace g_frame_trace;
+
+// The message index carried by a data frame's UDP payload, or -1 (not a replayed message).
+std::int64_t frame_message_index(ns3::Ptr<const ns3::Packet> packet) {
+  ns3::Ptr<ns3::Packet> copy = packet->Copy();
+  ns3::WifiMacHeader mac;
+  ns3::LlcSnapHeader llc;
+  ns3::Ipv4Header ip;
+  ns3::UdpHeader udp;
+  if (copy->RemoveHeader(mac) == 0 || !mac.IsData()) return -1;
+  copy->RemoveHeader(llc);
+  if (llc.GetType() != ns3::Ipv4L3Protocol::PROT_NUMBER) return -1;
+  copy->RemoveHeader(ip);
+  if (ip.GetProtocol() != ns3::UdpL4Protocol::PROT_NUMBER) return -1;
+  copy->RemoveHeader(udp);
+  std::vector<std::uint8_t> head(g_frame_trace.payload_offset + sv::kMessageIndexBytes);
+  const std::uint32_t copied = copy->CopyData(head.data(), static_cast<std::uint32_t>(head.size()));
+  if (copied < head.size()) return -1;
+  const auto index = sv::payload_index(head.data() + g_frame_trace.payload_offset,
+                                       sv::kMessageIndexBytes, g_frame_trace.messages->size());
+  return index ? static_cast<std::int64_t>(*index) : -1;
+}
+
+// Columns: time_ns,node,kind,retry,receiver,bytes,sequence,message_id (receiver -1: broadcast;
+// message_id -1: none).
+void on_phy_tx_begin_traced(std::uint32_t node, ns3::Ptr<const ns3::Packet> packet,
+                            double /*power_w*/) {
+  ns3::WifiMacHeader header;
+  std::string kind = "other";
+  int retry = 0;
+  std::int64_t receiver = -1;
+  std::int64_t sequence = -1;
+  std::int64_t message_id = -1;
+  if (packet->PeekHeader(header) != 0) {
+    if (header.IsData()) {
+      kind = "data";
+      retry = header.IsRetry() ? 1 : 0;
+      sequence = header.GetSequenceNumber();
+      const std::int64_t index = frame_message_index(packet);
+      if (index >= 0) {
+        message_id = static_cast<std::int64_t>(
+            (*g_frame_trace.messages)[static_cast<std::size_t>(index)].message_id);
+      }
+    } else if (header.IsAck()) {
+      kind = "ack";
+    } else if (header.IsRts()) {
+      kind = "rts";
+    } else if (header.IsCts()) {
+      kind = "cts";
+    }
+    const auto to = g_frame_trace.node_of.find(header.GetAddr1());
+    if (to != g_frame_trace.node_of.end()) receiver = to->second;
+  }
+  g_frame_trace.out << ns3::Simulator::Now().GetNanoSeconds() << ',' << node << ',' << kind << ','
+                    << retry << ',' << receiver << ',' << packet->GetSize() << ',' << sequence
+                    << ',' << message_id << '\n';
+}
 
 void on_phy_tx_begin(ns3::Ptr<const ns3::Packet> packet, double /*power_w*/) {
   ++g_mac.tx_frames;
@@ -378,6 +446,22 @@ nlohmann::ordered_json run(const Options& options) {
   ns3::Config::ConnectWithoutContext("/NodeList/*/$ns3::Ipv4L3Protocol/UnicastForward",
                                      ns3::MakeCallback(&on_unicast_forward));
 
+  if (!options.frame_trace.empty()) {
+    g_frame_trace.out.open(options.frame_trace);
+    if (!g_frame_trace.out) throw std::runtime_error(options.frame_trace + ": cannot write");
+    g_frame_trace.out << "time_ns,node,kind,retry,receiver,bytes,sequence,message_id\n";
+    g_frame_trace.messages = &messages;
+    if (options.routing == "flooding") {
+      g_frame_trace.payload_offset = sv::FloodingEndpoint::kHeaderBytes;
+    }
+    for (std::uint32_t i = 0; i < node_count; ++i) {
+      g_frame_trace.node_of[ns3::Mac48Address::ConvertFrom(devices.Get(i)->GetAddress())] = i;
+      const auto wifi = ns3::DynamicCast<ns3::WifiNetDevice>(devices.Get(i));
+      wifi->GetPhy()->TraceConnectWithoutContext(
+          "PhyTxBegin", ns3::MakeBoundCallback(&on_phy_tx_begin_traced, i));
+    }
+  }
+
   ns3::Simulator::Stop(ns3::Seconds(duration_s));
   const auto wall_start = std::chrono::steady_clock::now();
   const double cpu_start = process_cpu_seconds();
@@ -386,6 +470,12 @@ nlohmann::ordered_json run(const Options& options) {
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   ns3::Simulator::Destroy();
+  if (g_frame_trace.out.is_open()) g_frame_trace.out.close();
+  if (!options.delivery_trace.empty()) {
+    std::ofstream deliveries(options.delivery_trace);
+    metrics.write_deliveries(deliveries);
+    if (!deliveries) throw std::runtime_error(options.delivery_trace + ": cannot write");
+  }
 
   using Json = nlohmann::ordered_json;
   Json out;
@@ -469,6 +559,12 @@ int main(int argc, char** argv) {
   app.add_option("--routing", options.routing, "routing protocol")
       ->check(CLI::IsMember({"direct", "flooding", "aodv"}))
       ->capture_default_str();
+  app.add_option("--frame-trace", options.frame_trace,
+                 "CSV file of every frame put on the air (PhyTxBegin): "
+                 "time_ns,node,kind,retry,receiver,bytes,sequence,message_id");
+  app.add_option("--delivery-trace", options.delivery_trace,
+                 "CSV file of every message: message_id,source,destination,inject_ns,"
+                 "delivered_ns (-1: not delivered)");
   app.add_option("--duration-s", options.duration_s,
                  "simulated seconds (default: summary.json's sim_time_s)");
   app.add_option("--seed", options.seed, "ns-3 run number (RngRun)")->capture_default_str();

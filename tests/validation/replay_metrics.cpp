@@ -72,4 +72,14 @@ nlohmann::ordered_json ReplayMetrics::report() const {
   return out;
 }
 
+void ReplayMetrics::write_deliveries(std::ostream& out) const {
+  out << "message_id,source,destination,inject_ns,delivered_ns\n";
+  for (std::size_t i = 0; i < messages_.size(); ++i) {
+    const TrafficMessage& message = messages_[i];
+    out << message.message_id << ',' << message.source << ','
+        << (message.broadcast() ? std::int64_t{-1} : std::int64_t{message.destination}) << ','
+        << message.inject_ns << ',' << first_delivery_ns_[i] << '\n';
+  }
+}
+
 }  // namespace swarmnet::validation

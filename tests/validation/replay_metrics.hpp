@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <vector>
 
 #include "traffic_csv.hpp"
@@ -26,6 +27,10 @@ class ReplayMetrics {
                         std::uint32_t hops);
 
   [[nodiscard]] nlohmann::ordered_json report() const;
+  // One CSV line per message of the schedule, with a header:
+  // message_id,source,destination,inject_ns,delivered_ns (destination -1: broadcast;
+  // delivered_ns: first delivery at the destination, -1 if none).
+  void write_deliveries(std::ostream& out) const;
 
  private:
   const std::vector<TrafficMessage>& messages_;
