@@ -113,15 +113,18 @@ int bench_transport_command(const std::filesystem::path& out, double min_time_s)
     const auto b = get("RoundTrip", kind, "");
     if (!b.is_null()) std::printf("  %s %.2f", kind, real_ns(b) * 1e-3);
   }
-  std::printf("\n\nOne step exchange (batch there, deliveries back), us:\n");
-  std::printf("  %8s %10s %10s %10s\n", "robots", "ring", "uds", "tcp");
+  std::printf(
+      "\n\nOne step exchange (batch there, deliveries back), us; last column: the same\n"
+      "encoded and decoded with both ends in one thread (CPU only, no cross-core moves):\n");
+  std::printf("  %8s %10s %10s %10s %10s\n", "robots", "ring", "uds", "tcp", "1 thread");
   for (const char* robots : {"25", "100", "400", "2000"}) {
     std::printf("  %8s", robots);
     for (const char* kind : {"ring", "uds", "tcp"}) {
       const auto b = get("StepExchange", kind, robots);
       std::printf(" %10.2f", b.is_null() ? 0.0 : real_ns(b) * 1e-3);
     }
-    std::printf("\n");
+    const auto codec = get("StepCodec", "ring", robots);
+    std::printf(" %10.2f\n", codec.is_null() ? 0.0 : real_ns(codec) * 1e-3);
   }
   return 0;
 }

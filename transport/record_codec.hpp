@@ -1,5 +1,9 @@
-// Little-endian field encoding for transport records, with bounds-checked decoding: a short or
-// inconsistent record is reported, never read past.
+// Little-endian field encoding for transport records, written into and read from a record's
+// bytes where they lie (the transport's buffer), bounds-checked both ways: a writer never writes
+// past its space, a short or inconsistent record is reported, never read past.
+//
+// A field is a number (or an enum) as its bytes, or a byte string as a 4-byte length and the
+// bytes. encoded_bytes() of a record's fields is the space to reserve for it.
 #pragma once
 
 #include <bit>
@@ -7,7 +11,6 @@
 #include <cstdint>
 #include <cstring>
 #include <span>
-#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -16,25 +19,56 @@ namespace swarmnet {
 static_assert(std::endian::native == std::endian::little,
               "records are little-endian; a big-endian port needs byte swaps here");
 
+template <typename T>
+concept RecordScalar = std::is_arithmetic_v<T> || std::is_enum_v<T>;
+
+template <RecordScalar T>
+constexpr std::size_t encoded_bytes(T /*value*/) {
+  return sizeof(T);
+}
+inline std::size_t encoded_bytes(std::span<const std::byte> bytes) {
+  return sizeof(std::uint32_t) + bytes.size();
+}
+
 class RecordWriter {
  public:
-  explicit RecordWriter(std::vector<std::byte>& buffer) : buffer_(buffer) { buffer_.clear(); }
+  explicit RecordWriter(std::span<std::byte> space) : space_(space) {}
 
-  template <typename T>
+  template <RecordScalar T>
   RecordWriter& put(T value) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    const auto* bytes = reinterpret_cast<const std::byte*>(&value);
-    buffer_.insert(buffer_.end(), bytes, bytes + sizeof(T));
+    if (space_.size() - position_ < sizeof(T)) return overflow();
+    std::memcpy(space_.data() + position_, &value, sizeof(T));
+    position_ += sizeof(T);
     return *this;
   }
-  RecordWriter& put_bytes(std::span<const std::byte> bytes) {
+  RecordWriter& put(std::span<const std::byte> bytes) {
+    if (space_.size() - position_ < encoded_bytes(bytes)) return overflow();
     put(static_cast<std::uint32_t>(bytes.size()));
-    buffer_.insert(buffer_.end(), bytes.begin(), bytes.end());
+    if (!bytes.empty()) std::memcpy(space_.data() + position_, bytes.data(), bytes.size());
+    position_ += bytes.size();
     return *this;
   }
+  // The next `bytes` bytes, for a caller that fills a block itself; empty when they do not fit.
+  std::span<std::byte> take(std::size_t bytes) {
+    if (space_.size() - position_ < bytes) {
+      overflow();
+      return {};
+    }
+    position_ += bytes;
+    return space_.subspan(position_ - bytes, bytes);
+  }
+  // True when the fields filled the space exactly: the size reserved matched what was written.
+  [[nodiscard]] bool complete() const { return !overflowed_ && position_ == space_.size(); }
 
  private:
-  std::vector<std::byte>& buffer_;
+  RecordWriter& overflow() {
+    overflowed_ = true;
+    return *this;
+  }
+
+  std::span<std::byte> space_;
+  std::size_t position_ = 0;
+  bool overflowed_ = false;
 };
 
 class RecordReader {
@@ -42,20 +76,36 @@ class RecordReader {
   explicit RecordReader(std::span<const std::byte> record) : record_(record) {}
 
   // Each get returns false (and leaves `value` untouched) when the record is too short.
-  template <typename T>
+  template <RecordScalar T>
   bool get(T& value) {
-    static_assert(std::is_trivially_copyable_v<T>);
     if (record_.size() - position_ < sizeof(T)) return false;
     std::memcpy(&value, record_.data() + position_, sizeof(T));
     position_ += sizeof(T);
     return true;
   }
-  bool get_bytes(std::vector<std::byte>& bytes, std::uint32_t max_bytes) {
+  // A byte string as a view of the record's bytes (valid as long as the record is).
+  bool get_view(std::span<const std::byte>& bytes, std::uint32_t max_bytes) {
     std::uint32_t length = 0;
-    if (!get(length) || length > max_bytes || record_.size() - position_ < length) return false;
-    bytes.assign(record_.begin() + static_cast<std::ptrdiff_t>(position_),
-                 record_.begin() + static_cast<std::ptrdiff_t>(position_ + length));
+    if (record_.size() - position_ < sizeof length) return false;
+    std::memcpy(&length, record_.data() + position_, sizeof length);
+    if (length > max_bytes || record_.size() - position_ - sizeof length < length) return false;
+    position_ += sizeof length;
+    bytes = record_.subspan(position_, length);
     position_ += length;
+    return true;
+  }
+  // A byte string copied into `bytes`, reusing its capacity.
+  bool get_bytes(std::vector<std::byte>& bytes, std::uint32_t max_bytes) {
+    std::span<const std::byte> view;
+    if (!get_view(view, max_bytes)) return false;
+    bytes.assign(view.begin(), view.end());
+    return true;
+  }
+  // The next `count` bytes as they lie, for a caller that decodes a block itself.
+  bool take(std::size_t count, std::span<const std::byte>& block) {
+    if (record_.size() - position_ < count) return false;
+    block = record_.subspan(position_, count);
+    position_ += count;
     return true;
   }
   [[nodiscard]] bool at_end() const { return position_ == record_.size(); }

@@ -11,7 +11,7 @@ enum class IoStatus : std::uint8_t {
   closed,       // the peer closed its end; nothing more will come
   timeout,      // the deadline passed while waiting
   peer_dead,    // the liveness check reported the peer gone
-  too_large,    // the record can never fit in this ring
+  too_large,    // the record is longer than the channel ever takes
   corrupt,      // the ring's contents break the framing rules
 };
 
@@ -28,7 +28,7 @@ inline const char* to_string(IoStatus status) {
     case IoStatus::peer_dead:
       return "peer died";
     case IoStatus::too_large:
-      return "record larger than the ring";
+      return "record too long for the channel";
     case IoStatus::corrupt:
       return "corrupt framing";
   }

@@ -1,6 +1,7 @@
 // A Transport over two SpscRings: one this end produces into, one it consumes from. Where the
 // rings live (heap memory shared by two threads, or a shared-memory segment shared by two
-// processes) is the owner's business.
+// processes) is the owner's business. Records are encoded straight into the outgoing ring and
+// decoded straight out of the incoming one.
 #pragma once
 
 #include <string>
@@ -20,8 +21,12 @@ class RingTransport final : public Transport {
         description_(std::move(description)) {}
 
   // Records are staged and shown to the peer together at flush(), once per batch.
-  IoStatus send(std::span<const std::byte> record) override {
-    return outgoing_.write(record, policy_);
+  IoStatus reserve(std::size_t bytes, std::span<std::byte>& space) override {
+    return outgoing_.reserve(bytes, space, policy_);
+  }
+  IoStatus commit() override {
+    outgoing_.commit();
+    return IoStatus::ok;
   }
   IoStatus try_send(std::span<const std::byte> record) override {
     return outgoing_.try_push(record);
@@ -30,9 +35,10 @@ class RingTransport final : public Transport {
     outgoing_.publish();
     return IoStatus::ok;
   }
-  IoStatus receive(std::vector<std::byte>& record) override {
-    return incoming_.pop(record, policy_);
+  IoStatus receive_view(std::span<const std::byte>& record) override {
+    return incoming_.read(record, policy_);
   }
+  void release() override { incoming_.release(); }
   void close() override {
     outgoing_.close_producer();
     incoming_.close_consumer();

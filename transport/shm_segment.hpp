@@ -18,7 +18,8 @@
 namespace swarmnet {
 
 inline constexpr std::uint64_t kSegmentMagic = 0x544e454d'47455357ULL;  // "SWSEGMENT"-ish
-inline constexpr std::uint32_t kSegmentLayoutVersion = 1;
+// 2: the rings inside it are ring layout version 2 (a larger ring header moves the second ring).
+inline constexpr std::uint32_t kSegmentLayoutVersion = 2;
 
 struct SegmentHeader {
   alignas(kCacheLineBytes) std::uint64_t magic;

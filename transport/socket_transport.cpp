@@ -6,10 +6,12 @@
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
+#include <sched.h>
 #include <sys/socket.h>
 #include <sys/un.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -37,11 +39,22 @@ SocketTransport::~SocketTransport() {
 }
 
 IoStatus SocketTransport::wait_for(short events) {
+  // The same policy as the ring's (wait_policy.hpp): poll without sleeping for the spin time,
+  // yield a few times, then sleep in poll() in slices. A peer that answers within microseconds
+  // then finds this side awake and its send() wakes nobody, as with the ring.
+  pollfd p{fd_, events, 0};
+  const auto spin_until = std::chrono::steady_clock::now() + policy_.spin_time;
+  do {
+    if (::poll(&p, 1, 0) > 0) return IoStatus::ok;
+  } while (std::chrono::steady_clock::now() < spin_until);
+  for (std::uint32_t i = 0; i < policy_.yield_iterations; ++i) {
+    sched_yield();
+    if (::poll(&p, 1, 0) > 0) return IoStatus::ok;
+  }
   // The clock bounds how long we wait for the peer; it never reaches a result.
   const auto deadline = std::chrono::steady_clock::now() + policy_.timeout;
+  const auto slice = std::chrono::duration_cast<std::chrono::milliseconds>(policy_.sleep_slice);
   for (;;) {
-    pollfd p{fd_, events, 0};
-    const auto slice = std::chrono::duration_cast<std::chrono::milliseconds>(policy_.sleep_slice);
     const int ready = ::poll(&p, 1, static_cast<int>(std::max<std::int64_t>(1, slice.count())));
     if (ready > 0) return IoStatus::ok;
     if (ready < 0 && errno != EINTR) return IoStatus::closed;
@@ -50,28 +63,42 @@ IoStatus SocketTransport::wait_for(short events) {
   }
 }
 
-IoStatus SocketTransport::send(std::span<const std::byte> record) {
+IoStatus SocketTransport::reserve(std::size_t bytes, std::span<std::byte>& space) {
   if (write_closed_) return IoStatus::closed;
-  if (record.size() > kMaxRecordBytes) return IoStatus::too_large;
-  const auto length = static_cast<std::uint32_t>(record.size());
-  const auto* length_bytes = reinterpret_cast<const std::byte*>(&length);
-  out_.insert(out_.end(), length_bytes, length_bytes + kLengthBytes);
-  out_.insert(out_.end(), record.begin(), record.end());
-  return out_.size() >= kFlushThreshold ? flush() : IoStatus::ok;
+  if (bytes > kMaxRecordBytes) return IoStatus::too_large;
+  const std::size_t end = out_end_ + kLengthBytes + bytes;
+  // Grows geometrically, so the zero-filling of new space happens a few times per run.
+  if (out_.size() < end) out_.resize(std::max(end, 2 * out_.size()));
+  space = {out_.data() + out_end_ + kLengthBytes, bytes};
+  reserved_bytes_ = bytes;
+  reserved_ = true;
+  return IoStatus::ok;
+}
+
+IoStatus SocketTransport::commit() {
+  if (!reserved_) return IoStatus::ok;
+  const auto length = static_cast<std::uint32_t>(reserved_bytes_);
+  std::memcpy(out_.data() + out_end_, &length, kLengthBytes);
+  out_end_ += kLengthBytes + reserved_bytes_;
+  reserved_ = false;
+  return out_end_ >= kFlushThreshold ? flush() : IoStatus::ok;
 }
 
 IoStatus SocketTransport::try_send(std::span<const std::byte> record) {
   const IoStatus status = send(record);
   if (status != IoStatus::ok) return status;
-  const ssize_t n = ::send(fd_, out_.data(), out_.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
-  if (n > 0) out_.erase(out_.begin(), out_.begin() + n);
-  return out_.empty() ? IoStatus::ok : IoStatus::would_block;
+  const ssize_t n = ::send(fd_, out_.data(), out_end_, MSG_NOSIGNAL | MSG_DONTWAIT);
+  if (n > 0) {
+    std::memmove(out_.data(), out_.data() + n, out_end_ - static_cast<std::size_t>(n));
+    out_end_ -= static_cast<std::size_t>(n);
+  }
+  return out_end_ == 0 ? IoStatus::ok : IoStatus::would_block;
 }
 
 IoStatus SocketTransport::flush() {
   std::size_t done = 0;
-  while (done < out_.size()) {
-    const ssize_t n = ::send(fd_, out_.data() + done, out_.size() - done, MSG_NOSIGNAL);
+  while (done < out_end_) {
+    const ssize_t n = ::send(fd_, out_.data() + done, out_end_ - done, MSG_NOSIGNAL);
     if (n > 0) {
       done += static_cast<std::size_t>(n);
       continue;
@@ -83,24 +110,29 @@ IoStatus SocketTransport::flush() {
     }
     return IoStatus::closed;  // EPIPE, ECONNRESET: the peer is gone
   }
-  out_.clear();
+  out_end_ = 0;
   return IoStatus::ok;
 }
 
-// Makes at least `bytes` unread bytes available in in_.
+// Makes at least `bytes` unread bytes available in in_[in_start_, in_end_).
 IoStatus SocketTransport::fill(std::size_t bytes) {
-  if (in_.size() - in_start_ >= bytes) return IoStatus::ok;
-  // More is needed: drop what was read first. What remains is at most a partial record, so this
-  // is cheap, and the buffer stays at about one record plus one read whatever the run's length.
-  in_.erase(in_.begin(), in_.begin() + static_cast<std::ptrdiff_t>(in_start_));
-  in_start_ = 0;
-  while (in_.size() < bytes) {
-    const std::size_t old = in_.size();
-    in_.resize(old + std::max<std::size_t>(bytes - old, 65536));
-    const ssize_t n = ::recv(fd_, in_.data() + old, in_.size() - old, 0);
-    in_.resize(old + static_cast<std::size_t>(std::max<ssize_t>(n, 0)));
-    if (n > 0) continue;
-    if (n == 0) return in_.empty() ? IoStatus::closed : IoStatus::corrupt;
+  if (in_end_ - in_start_ >= bytes) return IoStatus::ok;
+  // More is needed: move what is left (at most a partial record, so this is cheap) to the front;
+  // the buffer stays at about one record plus one read whatever the run's length.
+  if (in_start_ != 0) {
+    std::memmove(in_.data(), in_.data() + in_start_, in_end_ - in_start_);
+    in_end_ -= in_start_;
+    in_start_ = 0;
+  }
+  constexpr std::size_t kReadBytes = 65536;
+  if (in_.size() < std::max(bytes, kReadBytes)) in_.resize(std::max(bytes, kReadBytes));
+  while (in_end_ < bytes) {
+    const ssize_t n = ::recv(fd_, in_.data() + in_end_, in_.size() - in_end_, 0);
+    if (n > 0) {
+      in_end_ += static_cast<std::size_t>(n);
+      continue;
+    }
+    if (n == 0) return in_end_ == 0 ? IoStatus::closed : IoStatus::corrupt;
     if (errno == EINTR) continue;
     if (errno == EAGAIN || errno == EWOULDBLOCK) {
       if (const IoStatus s = wait_for(POLLIN); s != IoStatus::ok) return s;
@@ -111,7 +143,7 @@ IoStatus SocketTransport::fill(std::size_t bytes) {
   return IoStatus::ok;
 }
 
-IoStatus SocketTransport::receive(std::vector<std::byte>& record) {
+IoStatus SocketTransport::receive_view(std::span<const std::byte>& record) {
   if (const IoStatus s = fill(kLengthBytes); s != IoStatus::ok) return s;
   std::uint32_t length = 0;
   std::memcpy(&length, in_.data() + in_start_, kLengthBytes);
@@ -119,8 +151,7 @@ IoStatus SocketTransport::receive(std::vector<std::byte>& record) {
   if (const IoStatus s = fill(kLengthBytes + length); s != IoStatus::ok) {
     return s == IoStatus::closed ? IoStatus::corrupt : s;  // cut off inside a record
   }
-  const auto* begin = in_.data() + in_start_ + kLengthBytes;
-  record.assign(begin, begin + length);
+  record = {in_.data() + in_start_ + kLengthBytes, length};
   in_start_ += kLengthBytes + length;
   return IoStatus::ok;
 }

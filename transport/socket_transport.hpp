@@ -1,6 +1,7 @@
 // A Transport over a connected stream socket (Unix-domain or TCP): records are framed as a
-// 4-byte little-endian length and the bytes, gathered in a buffer and written with one system
-// call per flush (once per step), not one per record.
+// 4-byte little-endian length and the bytes, encoded in place into a buffer and written with one
+// system call per flush (once per step), not one per record; received records are shown where
+// they lie in the receive buffer.
 #pragma once
 
 #include <cstdint>
@@ -18,10 +19,12 @@ class SocketTransport final : public Transport {
   SocketTransport(int fd, WaitPolicy policy, std::string description);
   ~SocketTransport() override;
 
-  IoStatus send(std::span<const std::byte> record) override;
+  IoStatus reserve(std::size_t bytes, std::span<std::byte>& space) override;
+  IoStatus commit() override;
   IoStatus try_send(std::span<const std::byte> record) override;
   IoStatus flush() override;
-  IoStatus receive(std::vector<std::byte>& record) override;
+  IoStatus receive_view(std::span<const std::byte>& record) override;
+  void release() override {}  // the receive buffer is reused at the next receive
   void close() override;
   [[nodiscard]] std::string describe() const override { return description_; }
 
@@ -35,9 +38,15 @@ class SocketTransport final : public Transport {
   int fd_;
   WaitPolicy policy_;
   std::string description_;
+  // Both buffers only grow (their unused tails are never zero-filled again): out_[0, out_end_)
+  // waits to be sent, in_[in_start_, in_end_) has been received and not yet shown.
   std::vector<std::byte> out_;
+  std::size_t out_end_ = 0;
+  std::size_t reserved_bytes_ = 0;
+  bool reserved_ = false;
   std::vector<std::byte> in_;
   std::size_t in_start_ = 0;
+  std::size_t in_end_ = 0;
   bool write_closed_ = false;
 };
 

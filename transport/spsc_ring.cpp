@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "asymmetric_fence.hpp"
 #include "futex.hpp"
 
 namespace swarmnet {
@@ -25,15 +26,14 @@ SpscRing SpscRing::create(void* memory, std::uint64_t capacity) {
     throw std::invalid_argument("ring capacity " + std::to_string(capacity) +
                                 " is not a power of two >= 64");
   }
-  SpscRing ring;
   auto* header = new (memory) RingHeader{};
   header->magic = kRingMagic;
   header->layout_version = kRingLayoutVersion;
   header->header_bytes = sizeof(RingHeader);
   header->capacity = capacity;
-  ring.header_ = header;
-  ring.storage_ = static_cast<std::byte*>(memory) + sizeof(RingHeader);
-  ring.mask_ = capacity - 1;
+  SpscRing ring;
+  std::string ignored;
+  attach(memory, footprint(capacity), ring, ignored);
   return ring;
 }
 
@@ -54,59 +54,88 @@ bool SpscRing::attach(void* memory, std::size_t memory_bytes, SpscRing& ring, st
             " bytes)";
     return false;
   }
-  if (!is_power_of_two(header->capacity) || footprint(header->capacity) > memory_bytes) {
+  if (!is_power_of_two(header->capacity) || header->capacity < 64 ||
+      footprint(header->capacity) > memory_bytes) {
     error = "ring capacity " + std::to_string(header->capacity) + " does not fit its " +
             std::to_string(memory_bytes) + "-byte memory";
     return false;
   }
+  ring = SpscRing();
   ring.header_ = header;
   ring.storage_ = static_cast<std::byte*>(memory) + sizeof(RingHeader);
+  ring.capacity_ = header->capacity;
   ring.mask_ = header->capacity - 1;
-  ring.cached_head_ = header->head.load(std::memory_order_acquire);
-  ring.write_head_ = ring.cached_head_;
-  ring.cached_tail_ = header->tail.load(std::memory_order_acquire);
+  ring.release_slice_ = release_slice_bytes(header->capacity);
+  ring.max_record_bytes_ = max_record_bytes(header->capacity);
+  ring.asymmetric_fences_ = asymmetric_fences_available();
+  ring.published_head_ = header->head.load(std::memory_order_acquire);
+  ring.write_head_ = ring.published_head_;
+  ring.cached_head_ = ring.published_head_;
+  ring.published_tail_ = header->tail.load(std::memory_order_acquire);
+  ring.read_tail_ = ring.published_tail_;
+  ring.cached_tail_ = ring.published_tail_;
   return true;
 }
 
-void SpscRing::copy_in(std::uint64_t position, const std::byte* source, std::size_t bytes) {
-  if (bytes == 0) return;  // an empty record's data() may be null, which memcpy must not get
-  const std::uint64_t offset = position & mask_;
-  const std::size_t first = std::min<std::uint64_t>(bytes, header_->capacity - offset);
-  std::memcpy(storage_ + offset, source, first);
-  if (first < bytes) std::memcpy(storage_, source + first, bytes - first);
-}
-
-void SpscRing::copy_out(std::uint64_t position, std::byte* target, std::size_t bytes) const {
-  if (bytes == 0) return;
-  const std::uint64_t offset = position & mask_;
-  const std::size_t first = std::min<std::uint64_t>(bytes, header_->capacity - offset);
-  std::memcpy(target, storage_ + offset, first);
-  if (first < bytes) std::memcpy(target + first, storage_, bytes - first);
-}
-
-IoStatus SpscRing::try_write(std::span<const std::byte> record) {
-  if (record.size() > max_record_bytes()) return IoStatus::too_large;
+IoStatus SpscRing::try_reserve(std::size_t bytes, std::span<std::byte>& space) {
+  if (bytes > max_record_bytes_) return IoStatus::too_large;
   if (header_->consumer_closed.load(std::memory_order_acquire) != 0) return IoStatus::closed;
-  const std::uint64_t need = padded(kLengthBytes + record.size());
-  if (write_head_ + need - cached_tail_ > header_->capacity) {
+  const std::uint64_t need = padded(kLengthBytes + bytes);
+  const std::uint64_t offset = write_head_ & mask_;
+  // A record never wraps: one that would cross the end starts again at the beginning.
+  const std::uint64_t skip = offset + need > capacity_ ? capacity_ - offset : 0;
+  const std::uint64_t end = write_head_ + skip + need;
+  if (end - cached_tail_ > capacity_) {
     cached_tail_ = header_->tail.load(std::memory_order_acquire);
-    if (write_head_ + need - cached_tail_ > header_->capacity) return IoStatus::would_block;
+    if (end - cached_tail_ > capacity_) return IoStatus::would_block;
   }
-  const auto length = static_cast<std::uint32_t>(record.size());
-  copy_in(write_head_, reinterpret_cast<const std::byte*>(&length), kLengthBytes);
-  copy_in(write_head_ + kLengthBytes, record.data(), record.size());
-  write_head_ += need;
-  // A large batch is shown in slices, so the consumer decodes while the producer still writes.
-  if (write_head_ - header_->head.load(std::memory_order_relaxed) >= kPublishSliceBytes) publish();
+  // The marker lies in free space and is published only together with the record after it.
+  if (skip != 0) std::memcpy(storage_ + offset, &kRingPaddingMarker, kLengthBytes);
+  reserved_at_ = write_head_ + skip;
+  reserved_bytes_ = bytes;
+  reserved_ = true;
+  space = {storage_ + (reserved_at_ & mask_) + kLengthBytes, bytes};
   return IoStatus::ok;
 }
 
+void SpscRing::commit() {
+  if (!reserved_) return;
+  const auto length = static_cast<std::uint32_t>(reserved_bytes_);
+  std::memcpy(storage_ + (reserved_at_ & mask_), &length, kLengthBytes);
+  write_head_ = reserved_at_ + padded(kLengthBytes + reserved_bytes_);
+  reserved_ = false;
+  // A large batch is shown in slices, so the consumer decodes while the producer still writes.
+  if (write_head_ - published_head_ >= kPublishSliceBytes) publish();
+}
+
 void SpscRing::publish() {
-  if (header_->head.load(std::memory_order_relaxed) == write_head_) return;
-  // seq_cst, not release: the store must be ordered before the load of consumer_sleeping in
-  // wake_consumer(), or a consumer going to sleep could miss these records.
-  header_->head.store(write_head_, std::memory_order_seq_cst);
+  if (write_head_ == published_head_) return;
+  published_head_ = write_head_;
+  // We store head, then load consumer_sleeping (wake_consumer); a consumer going to sleep stores
+  // consumer_sleeping, then loads head (wait_for). A fence between store and load on each side
+  // makes at least one of the two see the other's store: no wake-up is lost. A full fence here
+  // (a seq_cst store) waits for every earlier store to reach the cache, which is half the cost
+  // of publishing a lone record. When the consumer fences heavily (membarrier: a full fence on
+  // this CPU at some instant T during its call), a compiler barrier does: if T falls between our
+  // store and our load, or before our store, our load sees its flag; if T falls after our load,
+  // our store was visible before the consumer re-reads head.
+  if (asymmetric_fences_ && header_->consumer_fences_heavily.load(std::memory_order_relaxed) != 0) {
+    header_->head.store(write_head_, std::memory_order_release);
+    light_fence();
+  } else {
+    header_->head.store(write_head_, std::memory_order_seq_cst);
+  }
   wake_consumer();
+}
+
+IoStatus SpscRing::try_write(std::span<const std::byte> record) {
+  std::span<std::byte> space;
+  const IoStatus status = try_reserve(record.size(), space);
+  if (status != IoStatus::ok) return status;
+  // An empty record's data() may be null, which memcpy must not get.
+  if (!record.empty()) std::memcpy(space.data(), record.data(), record.size());
+  commit();
+  return IoStatus::ok;
 }
 
 IoStatus SpscRing::try_push(std::span<const std::byte> record) {
@@ -115,27 +144,69 @@ IoStatus SpscRing::try_push(std::span<const std::byte> record) {
   return status;
 }
 
-IoStatus SpscRing::try_pop(std::vector<std::byte>& record) {
-  const std::uint64_t tail = header_->tail.load(std::memory_order_relaxed);
-  if (cached_head_ - tail < kLengthBytes) {
-    // Read `closed` before `head`: records pushed before the close are still delivered.
-    const bool closed = header_->producer_closed.load(std::memory_order_acquire) != 0;
-    cached_head_ = header_->head.load(std::memory_order_acquire);
-    if (cached_head_ == tail) return closed ? IoStatus::closed : IoStatus::would_block;
+IoStatus SpscRing::try_read(std::span<const std::byte>& record) {
+  if (!announced_) announce_consumer();
+  release();
+  for (;;) {
+    if (cached_head_ == read_tail_) {
+      // Read `closed` before `head`: records published before the close are still delivered.
+      const bool closed = header_->producer_closed.load(std::memory_order_acquire) != 0;
+      cached_head_ = header_->head.load(std::memory_order_acquire);
+      if (cached_head_ == read_tail_) return closed ? IoStatus::closed : IoStatus::would_block;
+    }
+    const std::uint64_t available = cached_head_ - read_tail_;
+    const std::uint64_t offset = read_tail_ & mask_;
+    if (available > capacity_) return IoStatus::corrupt;
+    std::uint32_t length = 0;
+    std::memcpy(&length, storage_ + offset, kLengthBytes);
+    if (length == kRingPaddingMarker) {
+      if (capacity_ - offset > available) return IoStatus::corrupt;
+      consume(capacity_ - offset);
+      continue;
+    }
+    const std::uint64_t need = padded(kLengthBytes + length);
+    if (length > max_record_bytes_ || need > available || offset + need > capacity_) {
+      return IoStatus::corrupt;
+    }
+    record = {storage_ + offset + kLengthBytes, length};
+    held_bytes_ = need;
+    return IoStatus::ok;
   }
-  const std::uint64_t available = cached_head_ - tail;
-  if (available < kLengthBytes || available > header_->capacity) return IoStatus::corrupt;
-  std::uint32_t length = 0;
-  copy_out(tail, reinterpret_cast<std::byte*>(&length), kLengthBytes);
-  const std::uint64_t need = padded(kLengthBytes + length);
-  if (length > max_record_bytes() || need > available) return IoStatus::corrupt;
-  // assign/insert copy straight in: resize() would zero-fill the buffer first.
-  const std::uint64_t offset = (tail + kLengthBytes) & mask_;
-  const std::size_t first = std::min<std::uint64_t>(length, header_->capacity - offset);
-  record.assign(storage_ + offset, storage_ + offset + first);
-  record.insert(record.end(), storage_, storage_ + (length - first));
-  header_->tail.store(tail + need, std::memory_order_seq_cst);
+}
+
+void SpscRing::announce_consumer() {
+  // Before this consumer's first wait, so that every sleep after a producer saw the flag fences
+  // heavily.
+  announced_ = true;
+  if (asymmetric_fences_) header_->consumer_fences_heavily.store(1, std::memory_order_seq_cst);
+}
+
+void SpscRing::release() {
+  if (held_bytes_ == 0) return;
+  consume(held_bytes_);
+  held_bytes_ = 0;
+}
+
+void SpscRing::consume(std::uint64_t bytes) {
+  read_tail_ += bytes;
+  // One index store per slice rather than per record: the line holding `tail` then moves to the
+  // producer's core once per slice. max_record_bytes() leaves room for what is held back.
+  if (read_tail_ - published_tail_ >= release_slice_) publish_tail();
+}
+
+void SpscRing::publish_tail() {
+  published_tail_ = read_tail_;
+  // seq_cst for the same reason as in publish(), pairing with producer_sleeping.
+  header_->tail.store(read_tail_, std::memory_order_seq_cst);
   wake_producer();
+}
+
+IoStatus SpscRing::try_pop(std::vector<std::byte>& record) {
+  std::span<const std::byte> view;
+  const IoStatus status = try_read(view);
+  if (status != IoStatus::ok) return status;
+  record.assign(view.begin(), view.end());
+  release();
   return IoStatus::ok;
 }
 
@@ -157,9 +228,11 @@ namespace {
 
 // Retries `attempt` until it stops returning would_block: spins first, then sleeps on `event`
 // (announcing itself in `sleeping`) in slices, checking the deadline and the peer in between.
+// `heavy`: the side that wakes this one may fence lightly (see publish()), so this one fences
+// heavily; that costs microseconds, once per sleep, after tens of microseconds of spinning.
 template <typename Attempt>
 IoStatus wait_for(Attempt&& attempt, std::atomic<std::uint32_t>& event,
-                  std::atomic<std::uint32_t>& sleeping, const WaitPolicy& policy) {
+                  std::atomic<std::uint32_t>& sleeping, const WaitPolicy& policy, bool heavy) {
   IoStatus status = attempt();
   if (status != IoStatus::would_block) return status;
   // The clock bounds how long we spin and wait; it never reaches a result.
@@ -180,9 +253,13 @@ IoStatus wait_for(Attempt&& attempt, std::atomic<std::uint32_t>& event,
   for (;;) {
     const std::uint32_t seen = event.load(std::memory_order_acquire);
     sleeping.store(1, std::memory_order_seq_cst);
-    // Orders the announcement before re-reading the ring, pairing with the seq_cst index store
+    // Orders the announcement before re-reading the ring, pairing with the fenced index store
     // and flag load in the other side's wake_*(): one of the two sides sees the other.
-    std::atomic_thread_fence(std::memory_order_seq_cst);
+    if (heavy) {
+      heavy_fence();
+    } else {
+      std::atomic_thread_fence(std::memory_order_seq_cst);
+    }
     status = attempt();
     if (status == IoStatus::would_block) futex_wait(event, seen, policy.sleep_slice);
     sleeping.store(0, std::memory_order_relaxed);
@@ -196,12 +273,23 @@ IoStatus wait_for(Attempt&& attempt, std::atomic<std::uint32_t>& event,
 
 }  // namespace
 
-IoStatus SpscRing::write(std::span<const std::byte> record, const WaitPolicy& policy) {
-  IoStatus status = try_write(record);
+IoStatus SpscRing::reserve(std::size_t bytes, std::span<std::byte>& space,
+                           const WaitPolicy& policy) {
+  IoStatus status = try_reserve(bytes, space);
   if (status != IoStatus::would_block) return status;
   publish();  // the consumer can only make room by reading what is staged
-  return wait_for([&] { return try_write(record); }, header_->space_event,
-                  header_->producer_sleeping, policy);
+  // The consumer gives space back with a full fence (once per release slice): no heavy fence.
+  return wait_for([&] { return try_reserve(bytes, space); }, header_->space_event,
+                  header_->producer_sleeping, policy, false);
+}
+
+IoStatus SpscRing::write(std::span<const std::byte> record, const WaitPolicy& policy) {
+  std::span<std::byte> space;
+  const IoStatus status = reserve(record.size(), space, policy);
+  if (status != IoStatus::ok) return status;
+  if (!record.empty()) std::memcpy(space.data(), record.data(), record.size());
+  commit();
+  return IoStatus::ok;
 }
 
 IoStatus SpscRing::push(std::span<const std::byte> record, const WaitPolicy& policy) {
@@ -210,9 +298,18 @@ IoStatus SpscRing::push(std::span<const std::byte> record, const WaitPolicy& pol
   return status;
 }
 
+IoStatus SpscRing::read(std::span<const std::byte>& record, const WaitPolicy& policy) {
+  return wait_for([&] { return try_read(record); }, header_->data_event, header_->consumer_sleeping,
+                  policy, asymmetric_fences_);
+}
+
 IoStatus SpscRing::pop(std::vector<std::byte>& record, const WaitPolicy& policy) {
-  return wait_for([&] { return try_pop(record); }, header_->data_event, header_->consumer_sleeping,
-                  policy);
+  std::span<const std::byte> view;
+  const IoStatus status = read(view, policy);
+  if (status != IoStatus::ok) return status;
+  record.assign(view.begin(), view.end());
+  release();
+  return IoStatus::ok;
 }
 
 void SpscRing::close_producer() {

@@ -1,6 +1,7 @@
 #include "step_channel.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 namespace swarmnet {
 
@@ -8,10 +9,15 @@ namespace {
 
 // Positions travel in chunks so that no record approaches a ring's size at any swarm size.
 constexpr std::uint32_t kPositionsPerRecord = 1024;
+constexpr std::size_t kPositionBytes = 2 * sizeof(double);  // x, y
 constexpr std::uint32_t kMaxTextBytes = 1U << 24U;
 
 std::span<const std::byte> as_bytes(const std::string& text) {
   return {reinterpret_cast<const std::byte*>(text.data()), text.size()};
+}
+
+std::string as_text(std::span<const std::byte> bytes) {
+  return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
 }
 
 }  // namespace
@@ -47,15 +53,51 @@ const char* to_string(RecordType type) {
 StepChannel::StepChannel(Transport& transport, std::string peer)
     : transport_(transport), peer_(std::move(peer)) {}
 
-ProtocolResult StepChannel::send(const char* what, bool last_of_batch) {
-  IoStatus status = transport_.send(out_);
+template <typename... Fields>
+ProtocolResult StepChannel::send_record(const char* what, bool last_of_batch,
+                                        const Fields&... fields) {
+  std::span<std::byte> space;
+  IoStatus status = transport_.reserve((encoded_bytes(fields) + ...), space);
+  if (status == IoStatus::ok) {
+    RecordWriter writer(space);
+    (writer.put(fields), ...);
+    status = transport_.commit();
+  }
+  return sent(what, status, last_of_batch);
+}
+
+ProtocolResult StepChannel::send_positions(const StepBatch& batch, std::uint32_t first,
+                                           std::uint32_t count) {
+  const RecordType type = RecordType::positions;
+  const std::size_t block_bytes = std::size_t{count} * kPositionBytes;
+  std::span<std::byte> space;
+  IoStatus status = transport_.reserve(
+      encoded_bytes(type) + encoded_bytes(first) + encoded_bytes(count) + block_bytes, space);
+  if (status == IoStatus::ok) {
+    RecordWriter writer(space);
+    writer.put(type).put(first).put(count);
+    const std::span<std::byte> block = writer.take(block_bytes);
+    if (!writer.complete()) {
+      return {IoStatus::corrupt, "internal error: a positions record does not fill its space"};
+    }
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const Vec2& p = batch.positions[first + i];
+      const double xy[2] = {p.x(), p.y()};
+      std::memcpy(block.data() + i * kPositionBytes, xy, kPositionBytes);
+    }
+    status = transport_.commit();
+  }
+  return sent("positions", status, false);
+}
+
+ProtocolResult StepChannel::sent(const char* what, IoStatus status, bool last_of_batch) {
   if (status == IoStatus::ok && last_of_batch) status = transport_.flush();
   if (status == IoStatus::ok) return {};
   return {status, "cannot send " + std::string(what) + " to " + peer_ + ": " + to_string(status)};
 }
 
 ProtocolResult StepChannel::receive(RecordType& type, RecordReader*& reader) {
-  const IoStatus status = transport_.receive(in_);
+  const IoStatus status = transport_.receive_view(in_);
   if (status != IoStatus::ok) {
     std::string how = to_string(status);
     if (status == IoStatus::closed) how = "it closed the channel before finishing";
@@ -72,12 +114,10 @@ ProtocolResult StepChannel::receive(RecordType& type, RecordReader*& reader) {
   type = static_cast<RecordType>(raw);
   reader = &*reader_;
   if (type == RecordType::failure) {
-    std::vector<std::byte> text;
-    if (!reader->get_bytes(text, kMaxTextBytes)) return malformed(type);
+    std::span<const std::byte> text;
+    if (!reader->get_view(text, kMaxTextBytes)) return malformed(type);
     peer_failed_ = true;
-    return {
-        IoStatus::closed,
-        peer_ + " failed: " + std::string(reinterpret_cast<const char*>(text.data()), text.size())};
+    return {IoStatus::closed, peer_ + " failed: " + as_text(text)};
   }
   return {};
 }
@@ -93,15 +133,9 @@ ProtocolResult StepChannel::unexpected(RecordType got, const char* expected) con
 }
 
 ProtocolResult StepChannel::send_hello(const Hello& hello) {
-  RecordWriter(out_)
-      .put(static_cast<std::uint32_t>(RecordType::hello))
-      .put(hello.protocol_version)
-      .put(hello.seed)
-      .put(hello.robots)
-      .put(hello.step_ns)
-      .put_bytes(as_bytes(hello.scenario_yaml))
-      .put_bytes(as_bytes(hello.run_dir));
-  return send("hello", true);
+  return send_record("hello", true, RecordType::hello, hello.protocol_version, hello.seed,
+                     hello.robots, hello.step_ns, as_bytes(hello.scenario_yaml),
+                     as_bytes(hello.run_dir));
 }
 
 ProtocolResult StepChannel::receive_hello(Hello& hello) {
@@ -116,26 +150,21 @@ ProtocolResult StepChannel::receive_hello(Hello& hello) {
                 std::to_string(hello.protocol_version) + ", this one speaks version " +
                 std::to_string(kStepProtocolVersion)};
   }
-  std::vector<std::byte> yaml;
-  std::vector<std::byte> dir;
+  std::span<const std::byte> yaml;
+  std::span<const std::byte> dir;
   if (!reader->get(hello.seed) || !reader->get(hello.robots) || !reader->get(hello.step_ns) ||
-      !reader->get_bytes(yaml, kMaxTextBytes) || !reader->get_bytes(dir, kMaxTextBytes) ||
+      !reader->get_view(yaml, kMaxTextBytes) || !reader->get_view(dir, kMaxTextBytes) ||
       !reader->at_end()) {
     return malformed(type);
   }
-  hello.scenario_yaml.assign(reinterpret_cast<const char*>(yaml.data()), yaml.size());
-  hello.run_dir.assign(reinterpret_cast<const char*>(dir.data()), dir.size());
+  hello.scenario_yaml = as_text(yaml);
+  hello.run_dir = as_text(dir);
   return {};
 }
 
 ProtocolResult StepChannel::send_welcome(const Hello& accepted) {
-  RecordWriter(out_)
-      .put(static_cast<std::uint32_t>(RecordType::welcome))
-      .put(kStepProtocolVersion)
-      .put(accepted.seed)
-      .put(accepted.robots)
-      .put(accepted.step_ns);
-  return send("welcome", true);
+  return send_record("welcome", true, RecordType::welcome, kStepProtocolVersion, accepted.seed,
+                     accepted.robots, accepted.step_ns);
 }
 
 ProtocolResult StepChannel::receive_welcome(const Hello& sent) {
@@ -168,33 +197,25 @@ ProtocolResult StepChannel::receive_welcome(const Hello& sent) {
 
 ProtocolResult StepChannel::send_batch(const StepBatch& batch) {
   const auto robots = static_cast<std::uint32_t>(batch.positions.size());
-  RecordWriter(out_)
-      .put(static_cast<std::uint32_t>(RecordType::step_begin))
-      .put(batch.step)
-      .put(batch.start.count())
-      .put(robots)
-      .put(static_cast<std::uint32_t>(batch.messages.size()));
-  if (auto r = send("step_begin"); !r.ok()) return r;
+  if (auto r =
+          send_record("step_begin", false, RecordType::step_begin, batch.step, batch.start.count(),
+                      robots, static_cast<std::uint32_t>(batch.messages.size()));
+      !r.ok()) {
+    return r;
+  }
   for (std::uint32_t first = 0; first < robots; first += kPositionsPerRecord) {
     const std::uint32_t count = std::min(kPositionsPerRecord, robots - first);
-    RecordWriter writer(out_);
-    writer.put(static_cast<std::uint32_t>(RecordType::positions)).put(first).put(count);
-    for (std::uint32_t i = first; i < first + count; ++i) {
-      writer.put(batch.positions[i].x()).put(batch.positions[i].y());
-    }
-    if (auto r = send("positions"); !r.ok()) return r;
+    if (auto r = send_positions(batch, first, count); !r.ok()) return r;
   }
   for (const AppMessage& message : batch.messages) {
-    RecordWriter(out_)
-        .put(static_cast<std::uint32_t>(RecordType::message))
-        .put(message.message_id)
-        .put(message.source)
-        .put(message.destination)
-        .put_bytes(message.payload);
-    if (auto r = send("message"); !r.ok()) return r;
+    if (auto r =
+            send_record("message", false, RecordType::message, message.message_id, message.source,
+                        message.destination, std::span<const std::byte>(message.payload));
+        !r.ok()) {
+      return r;
+    }
   }
-  RecordWriter(out_).put(static_cast<std::uint32_t>(RecordType::step_end)).put(batch.step);
-  return send("step_end", true);
+  return send_record("step_end", true, RecordType::step_end, batch.step);
 }
 
 ProtocolResult StepChannel::receive_batch(StepBatch& batch, bool& finished) {
@@ -222,16 +243,16 @@ ProtocolResult StepChannel::receive_batch(StepBatch& batch, bool& finished) {
     if (type != RecordType::positions) return unexpected(type, "positions");
     std::uint32_t first = 0;
     std::uint32_t count = 0;
+    std::span<const std::byte> block;
     if (!reader->get(first) || !reader->get(count) || first != filled || count > robots - first ||
-        reader->remaining() != std::size_t{count} * 2 * sizeof(double)) {
+        reader->remaining() != std::size_t{count} * kPositionBytes ||
+        !reader->take(std::size_t{count} * kPositionBytes, block)) {
       return malformed(type);
     }
-    for (std::uint32_t i = first; i < first + count; ++i) {
-      double x = 0.0;
-      double y = 0.0;
-      reader->get(x);
-      reader->get(y);
-      batch.positions[i] = Vec2(x, y);
+    for (std::uint32_t i = 0; i < count; ++i) {
+      double xy[2];
+      std::memcpy(xy, block.data() + i * kPositionBytes, kPositionBytes);
+      batch.positions[first + i] = Vec2(xy[0], xy[1]);
     }
     filled += count;
   }
@@ -258,24 +279,16 @@ ProtocolResult StepChannel::receive_batch(StepBatch& batch, bool& finished) {
 
 ProtocolResult StepChannel::send_result(const StepResult& result) {
   for (const Delivery& delivery : result.deliveries) {
-    RecordWriter(out_)
-        .put(static_cast<std::uint32_t>(RecordType::delivery))
-        .put(delivery.message_id)
-        .put(delivery.source)
-        .put(delivery.destination)
-        .put(delivery.receiver)
-        .put(delivery.sent_at.count())
-        .put(delivery.delivered_at.count())
-        .put(delivery.hops)
-        .put_bytes(delivery.payload);
-    if (auto r = send("delivery"); !r.ok()) return r;
+    if (auto r = send_record("delivery", false, RecordType::delivery, delivery.message_id,
+                             delivery.source, delivery.destination, delivery.receiver,
+                             delivery.sent_at.count(), delivery.delivered_at.count(), delivery.hops,
+                             std::span<const std::byte>(delivery.payload));
+        !r.ok()) {
+      return r;
+    }
   }
-  RecordWriter(out_)
-      .put(static_cast<std::uint32_t>(RecordType::step_done))
-      .put(result.step)
-      .put(result.events)
-      .put(static_cast<std::uint32_t>(result.deliveries.size()));
-  return send("step_done", true);
+  return send_record("step_done", true, RecordType::step_done, result.step, result.events,
+                     static_cast<std::uint32_t>(result.deliveries.size()));
 }
 
 ProtocolResult StepChannel::receive_result(StepResult& result) {
@@ -318,13 +331,11 @@ ProtocolResult StepChannel::receive_result(StepResult& result) {
 }
 
 ProtocolResult StepChannel::send_finish() {
-  RecordWriter(out_).put(static_cast<std::uint32_t>(RecordType::finish));
-  return send("finish", true);
+  return send_record("finish", true, RecordType::finish);
 }
 
 ProtocolResult StepChannel::send_report(const std::string& json) {
-  RecordWriter(out_).put(static_cast<std::uint32_t>(RecordType::report)).put_bytes(as_bytes(json));
-  return send("report", true);
+  return send_record("report", true, RecordType::report, as_bytes(json));
 }
 
 ProtocolResult StepChannel::receive_report(std::string& json) {
@@ -332,17 +343,19 @@ ProtocolResult StepChannel::receive_report(std::string& json) {
   RecordReader* reader = nullptr;
   if (auto r = receive(type, reader); !r.ok()) return r;
   if (type != RecordType::report) return unexpected(type, "report");
-  std::vector<std::byte> text;
-  if (!reader->get_bytes(text, kMaxTextBytes) || !reader->at_end()) return malformed(type);
-  json.assign(reinterpret_cast<const char*>(text.data()), text.size());
+  std::span<const std::byte> text;
+  if (!reader->get_view(text, kMaxTextBytes) || !reader->at_end()) return malformed(type);
+  json = as_text(text);
   return {};
 }
 
 void StepChannel::send_failure(const std::string& message) {
-  RecordWriter(out_)
-      .put(static_cast<std::uint32_t>(RecordType::failure))
-      .put_bytes(as_bytes(message));
-  (void)transport_.try_send(out_);
+  // Encoded aside rather than in place: try_send must not wait for room, and a reservation
+  // would.
+  const std::span<const std::byte> text = as_bytes(message);
+  std::vector<std::byte> record(encoded_bytes(RecordType::failure) + encoded_bytes(text));
+  RecordWriter(record).put(RecordType::failure).put(text);
+  (void)transport_.try_send(record);
 }
 
 }  // namespace swarmnet

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -87,15 +88,19 @@ class StepChannel {
   [[nodiscard]] bool peer_failed() const { return peer_failed_; }
 
  private:
-  ProtocolResult send(const char* what, bool last_of_batch = false);
+  // Encodes one record of `fields` straight into the transport's buffer and sends it; the last
+  // record of a batch also flushes.
+  template <typename... Fields>
+  ProtocolResult send_record(const char* what, bool last_of_batch, const Fields&... fields);
+  ProtocolResult send_positions(const StepBatch& batch, std::uint32_t first, std::uint32_t count);
+  ProtocolResult sent(const char* what, IoStatus status, bool last_of_batch);
   ProtocolResult receive(RecordType& type, RecordReader*& reader);
   ProtocolResult malformed(RecordType type) const;
   ProtocolResult unexpected(RecordType got, const char* expected) const;
 
   Transport& transport_;
   std::string peer_;
-  std::vector<std::byte> out_;
-  std::vector<std::byte> in_;
+  std::span<const std::byte> in_;  // the record being decoded, where it lies in the transport
   std::optional<RecordReader> reader_;
   bool peer_failed_ = false;
 };

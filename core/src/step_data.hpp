@@ -1,5 +1,6 @@
 // What crosses between the robot half and the network half once per step (DESIGN.md section 2).
-// transport/step_codec encodes these into framed records; both halves see only these types.
+// transport/step_channel encodes these into framed records, straight into the transport's
+// buffer, and decodes them from where they arrive; both halves see only these types.
 #pragma once
 
 #include <cstdint>

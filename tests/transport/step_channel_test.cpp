@@ -9,6 +9,15 @@
 namespace swarmnet {
 namespace {
 
+// A record of `fields`, encoded by hand to feed the channel what a broken peer would send.
+template <typename... Fields>
+std::vector<std::byte> encode(const Fields&... fields) {
+  std::vector<std::byte> record((encoded_bytes(fields) + ...));
+  RecordWriter writer(record);
+  (writer.put(fields), ...);
+  return record;
+}
+
 StepBatch sample_batch(std::uint32_t robots, std::uint32_t messages) {
   StepBatch batch;
   batch.step = 7;
@@ -19,7 +28,7 @@ StepBatch sample_batch(std::uint32_t robots, std::uint32_t messages) {
     m.message_id = 100 + i;
     m.source = i % robots;
     m.destination = i % 3 == 0 ? kBroadcast : (i + 1) % robots;
-    m.payload.assign(i * 10, static_cast<std::byte>(i));
+    m.payload.assign(std::size_t{i} * 10, static_cast<std::byte>(i));
     batch.messages.push_back(std::move(m));
   }
   return batch;
@@ -97,9 +106,7 @@ TEST(StepChannel, MalformedRecordsAreNamed) {
   impatient.timeout = std::chrono::seconds(5);  // a mistake here fails fast instead of hanging
   InprocChannel link(std::uint64_t{1} << 16, impatient);
   StepChannel network(link.network_end(), "the robot half");
-  std::vector<std::byte> raw;
-  RecordWriter(raw).put(std::uint32_t{99});
-  ASSERT_EQ(link.robot_end().send(raw), IoStatus::ok);
+  ASSERT_EQ(link.robot_end().send(encode(std::uint32_t{99})), IoStatus::ok);
   ASSERT_EQ(link.robot_end().flush(), IoStatus::ok);
   StepBatch batch;
   bool finished = false;
@@ -109,15 +116,13 @@ TEST(StepChannel, MalformedRecordsAreNamed) {
   EXPECT_NE(r.error.find("the robot half"), std::string::npos) << r.error;
 
   // A step_begin that is too short.
-  RecordWriter(raw).put(static_cast<std::uint32_t>(RecordType::step_begin)).put(std::uint64_t{1});
-  ASSERT_EQ(link.robot_end().send(raw), IoStatus::ok);
+  ASSERT_EQ(link.robot_end().send(encode(RecordType::step_begin, std::uint64_t{1})), IoStatus::ok);
   ASSERT_EQ(link.robot_end().flush(), IoStatus::ok);
   r = network.receive_batch(batch, finished);
   EXPECT_NE(r.error.find("malformed step_begin record"), std::string::npos) << r.error;
 
   // A delivery where a step_begin is due.
-  RecordWriter(raw).put(static_cast<std::uint32_t>(RecordType::delivery));
-  ASSERT_EQ(link.robot_end().send(raw), IoStatus::ok);
+  ASSERT_EQ(link.robot_end().send(encode(RecordType::delivery)), IoStatus::ok);
   ASSERT_EQ(link.robot_end().flush(), IoStatus::ok);
   r = network.receive_batch(batch, finished);
   EXPECT_NE(r.error.find("sent a delivery record where step_begin or finish was expected"),
@@ -167,6 +172,23 @@ TEST(StepChannel, HandshakeExchangesTheInitialParameters) {
   ASSERT_TRUE(network.send_welcome(got).ok());
   const auto r = robot.receive_welcome(sent);
   EXPECT_TRUE(r.ok()) << r.error;
+}
+
+TEST(StepChannel, ARecordLongerThanTheRingTakesIsAClearError) {
+  InprocChannel link(std::uint64_t{1} << 16);  // records up to 30 KiB
+  StepChannel robot(link.robot_end(), "the network half");
+  Hello hello = sample_hello();
+  hello.scenario_yaml.assign(40'000, 'x');
+  const auto r = robot.send_hello(hello);
+  EXPECT_EQ(r.io, IoStatus::too_large);
+  EXPECT_EQ(r.error, "cannot send hello to the network half: record too long for the channel");
+  // Nothing half-written reached the other end; the channel still works.
+  hello.scenario_yaml = "name: x\n";
+  ASSERT_TRUE(robot.send_hello(hello).ok());
+  StepChannel network(link.network_end(), "the robot half");
+  Hello got;
+  ASSERT_TRUE(network.receive_hello(got).ok());
+  EXPECT_EQ(got.scenario_yaml, "name: x\n");
 }
 
 TEST(StepChannel, ProtocolVersionMismatchNamesBothVersions) {
