@@ -5,23 +5,12 @@
 #include <string>
 #include <vector>
 
+#include "recording_phy_listener.hpp"
+
 namespace swarmnet {
 namespace {
 
-class RecordingListener final : public PhyListener {
- public:
-  void phy_transmit_end() override { log.emplace_back("tx_end"); }
-  void phy_receive(const Frame& frame, const RxInfo& info) override {
-    log.push_back("rx " + std::to_string(frame.uid));
-    last_power_dbm = info.rx_power_dbm;
-  }
-  void phy_receive_error() override { log.emplace_back("rx_error"); }
-  void phy_medium_busy() override { log.emplace_back("busy"); }
-  void phy_medium_idle() override { log.emplace_back("idle"); }
-
-  std::vector<std::string> log;
-  double last_power_dbm = 0.0;
-};
+using RecordingListener = test::RecordingPhyListener;
 
 Frame frame_with_uid(std::uint64_t uid) {
   Frame frame;
@@ -52,7 +41,7 @@ TEST(NetworkPhy, OverlappingFramesAreAllReceivedAndCarrierSenseFollowsThem) {
   phy.signal_end(frame_with_uid(2), -60.0);
   EXPECT_FALSE(phy.medium_busy());
   EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "rx 1", "idle", "rx 2"}));
-  EXPECT_EQ(listener.last_power_dbm, -60.0);
+  EXPECT_EQ(listener.last_rx.rx_power_dbm, -60.0);
 }
 
 TEST(NetworkPhy, OwnTransmissionMakesTheMediumBusyWithoutCallbacks) {

@@ -12,26 +12,12 @@
 #include "network/propagation_chain.hpp"
 #include "network/scheduler.hpp"
 #include "network_test_support.hpp"
+#include "recording_phy_listener.hpp"
 
 namespace swarmnet {
 namespace {
 
-class RecordingListener final : public PhyListener {
- public:
-  void phy_transmit_end() override { log.emplace_back("tx_end"); }
-  void phy_receive(const Frame& frame, const RxInfo& info) override {
-    log.push_back("rx " + std::to_string(frame.uid));
-    last_sinr_db = info.sinr_db;
-  }
-  void phy_receive_error() override { log.emplace_back("rx_error"); }
-  void phy_medium_busy() override { log.emplace_back("busy"); }
-  void phy_medium_idle() override { log.emplace_back("idle"); }
-  void phy_collision(const Frame& frame) override {
-    log.push_back("collision " + std::to_string(frame.uid));
-  }
-  std::vector<std::string> log;
-  double last_sinr_db = 0.0;
-};
+using RecordingListener = test::RecordingPhyListener;
 
 PhyConfig sinr_config() {
   PhyConfig config;
@@ -89,7 +75,7 @@ TEST(WirelessSinrPhy, AFrameAloneIsReceived) {
   EXPECT_EQ(phy.state(), Phy::State::receiving);
   scheduler.run_until(us(3000));
   EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "idle", "rx 1"}));
-  EXPECT_NEAR(listener.last_sinr_db, -75.0 - noise_floor_dbm(sinr_config()), 1e-9);
+  EXPECT_NEAR(listener.last_rx.sinr_db, -75.0 - noise_floor_dbm(sinr_config()), 1e-9);
 }
 
 TEST(WirelessSinrPhy, AFrameIsLostToInterferenceItWouldSurviveAlone) {
@@ -231,7 +217,7 @@ TEST(WirelessSinrPhy, QuietSignalsCountInTheSinr) {
   const double noise_mw = dbm_to_milliwatts(noise_floor_dbm(sinr_config()));
   const double expected_db =
       10.0 * std::log10(dbm_to_milliwatts(-75.0) / (noise_mw + dbm_to_milliwatts(-93.0)));
-  EXPECT_NEAR(listener.last_sinr_db, expected_db, 1e-9);
+  EXPECT_NEAR(listener.last_rx.sinr_db, expected_db, 1e-9);
 }
 
 TEST(WirelessSinrPhy, QuietSignalsDrownAFrameWithoutBeingSensed) {

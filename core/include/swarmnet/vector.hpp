@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 
 namespace swarmnet {
 
@@ -20,6 +21,13 @@ struct Rect {
   [[nodiscard]] double height_m() const { return y_max_m - y_min_m; }
   [[nodiscard]] bool contains(const Vec2& p) const {
     return p.x() >= x_min_m && p.x() <= x_max_m && p.y() >= y_min_m && p.y() <= y_max_m;
+  }
+  // Grows the rectangle just enough to contain `p`.
+  void include(const Vec2& p) {
+    x_min_m = std::min(x_min_m, p.x());
+    y_min_m = std::min(y_min_m, p.y());
+    x_max_m = std::max(x_max_m, p.x());
+    y_max_m = std::max(y_max_m, p.y());
   }
 };
 

@@ -54,15 +54,14 @@ void Channel::set_positions(std::span<const Vec2> positions) {
 }
 
 void Channel::rebuild_grid() {
-  if (!use_grid_) return;
   // Bounds: the arena grown to hold every node (points outside would pile up in border cells).
   Rect bounds = arena_bounds_;
-  for (const Vec2& p : positions_) {
-    bounds.x_min_m = std::min(bounds.x_min_m, p.x());
-    bounds.y_min_m = std::min(bounds.y_min_m, p.y());
-    bounds.x_max_m = std::max(bounds.x_max_m, p.x());
-    bounds.y_max_m = std::max(bounds.y_max_m, p.y());
-  }
+  for (const Vec2& p : positions_) bounds.include(p);
+  // The farthest a frame sent during this step can travel: the cutoff, or else across the bounds.
+  const double reach_m =
+      std::isfinite(cutoff_m_) ? cutoff_m_ : std::hypot(bounds.width_m(), bounds.height_m());
+  longest_reach_ = std::max(longest_reach_, propagation_delay(reach_m));
+  if (!use_grid_) return;
   if (!grid_ready_ || bounds != grid_bounds_) {
     grid_.reset(bounds, std::max(event_cutoff_m_, kMinCellM));
     grid_bounds_ = bounds;
@@ -142,22 +141,6 @@ void Channel::remember_on_air(const Frame& frame, SimTime duration) {
   if (!positions_snapshot_) {
     positions_snapshot_ = std::make_shared<const std::vector<Vec2>>(positions_);
   }
-  SimTime reach = kTimeZero;
-  if (std::isfinite(cutoff_m_)) {
-    reach = propagation_delay(cutoff_m_);
-  } else {
-    // No cutoff: a frame reaches at most across the nodes' bounding box.
-    Rect box{positions_.front().x(), positions_.front().y(), positions_.front().x(),
-             positions_.front().y()};
-    for (const Vec2& p : positions_) {
-      box.x_min_m = std::min(box.x_min_m, p.x());
-      box.y_min_m = std::min(box.y_min_m, p.y());
-      box.x_max_m = std::max(box.x_max_m, p.x());
-      box.y_max_m = std::max(box.y_max_m, p.y());
-    }
-    reach = propagation_delay(std::hypot(box.x_max_m - box.x_min_m, box.y_max_m - box.y_min_m));
-  }
-  longest_reach_ = std::max(longest_reach_, reach);
   longest_duration_ = std::max(longest_duration_, duration);
   // A query asks about [from, now) with `from` no earlier than the start of a reception still
   // under way: at most the longest frame plus the longest reach ago. Older frames cannot matter.

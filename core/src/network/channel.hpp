@@ -110,6 +110,7 @@ class Channel final : public QuietSignalSource {
     std::size_t next_end = 0;
   };
 
+  // Updates the bounds, the grid (if used) and longest_reach_ after the positions changed.
   void rebuild_grid();
   void remember_on_air(const Frame& frame, SimTime duration);
   std::uint32_t acquire_fanout();

@@ -302,16 +302,21 @@ void Aodv::send_request(NodeId destination) {
     entry.rreq_count = ttl == params_.net_diameter ? 1 : 0;
     table_.insert(std::move(entry));
   }
+  context_->count("route_discoveries");
+  originate_request(rreq, ttl);
+  schedule_request_retry(destination);
+}
+
+void Aodv::originate_request(Rreq rreq, std::uint32_t ttl) {
   rreq.gratuitous = params_.gratuitous_reply;
   rreq.destination_only = params_.destination_only;
   rreq.originator = self_;
   rreq.originator_seq = ++seq_;
   rreq.id = ++rreq_id_;
   rreq.ttl = static_cast<std::uint8_t>(std::min<std::uint32_t>(ttl, kMaxHopCount));
-  rreq_ids_.is_duplicate(self_, rreq.id, t);
-  context_->count("route_discoveries");
+  // Our own request, heard back from a neighbour, is a duplicate (RFC 3561 6.3).
+  rreq_ids_.is_duplicate(self_, rreq.id, now());
   broadcast_control(rreq);
-  schedule_request_retry(destination);
 }
 
 void Aodv::schedule_request_retry(NodeId destination) {
@@ -383,14 +388,7 @@ bool Aodv::start_local_repair(const Packet& packet, RouteEntry& route) {
   Rreq rreq;
   rreq.destination = destination;
   rreq.destination_seq = route.seq;
-  rreq.gratuitous = params_.gratuitous_reply;
-  rreq.destination_only = params_.destination_only;
-  rreq.originator = self_;
-  rreq.originator_seq = ++seq_;
-  rreq.id = ++rreq_id_;
-  rreq.ttl = static_cast<std::uint8_t>(std::min<std::uint32_t>(ttl, kMaxHopCount));
-  rreq_ids_.is_duplicate(self_, rreq.id, now());
-  broadcast_control(rreq);
+  originate_request(rreq, ttl);
   const SimTime wait =
       2 * params_.node_traversal_time * static_cast<std::int64_t>(ttl + params_.timeout_buffer);
   discovery_timers_[destination] =
