@@ -251,44 +251,23 @@ TEST(NetworkScheduler, AdvanceIfNextOnlyWhenNothingComesFirst) {
   EXPECT_EQ(clocks, (std::vector<SimTime>{ns(20)}));
 }
 
-TEST(NetworkScheduler, LaneTimersRunExactlyWhereHeapTimersWould) {
-  // The same timers through a lane and through schedule_in, interleaved with other events at
-  // equal instants and cancelled here and there, run in the same order.
-  const auto run = [](bool use_lane) {
-    Scheduler scheduler;
-    const Scheduler::LaneId lane = scheduler.lane(ns(4));
-    EXPECT_EQ(scheduler.lane(ns(4)), lane);  // one lane per delay
-    std::vector<int> order;
-    std::vector<TimerId> timers;
-    for (int i = 0; i < 40; ++i) {
-      scheduler.schedule_at(ns(i), [&, i, lane, use_lane] {
-        order.push_back(i);
-        const auto callback = [&order, i] { order.push_back(1000 + i); };
-        timers.push_back(use_lane ? scheduler.schedule_in_lane(lane, callback)
-                                  : scheduler.schedule_in(ns(4), callback));
-        scheduler.schedule_in(ns(4), [&order, i] { order.push_back(2000 + i); });
-        if (i % 3 == 2) scheduler.cancel(timers[i - 1]);
-      });
-    }
-    scheduler.run_until(ns(100));
-    EXPECT_EQ(scheduler.pending_count(), 0U);
-    return order;
-  };
-  const std::vector<int> with_lane = run(true);
-  EXPECT_EQ(with_lane, run(false));
-  EXPECT_EQ(with_lane.size(), 40U + 40U + 40U - 13U);
-}
-
-TEST(NetworkScheduler, ClearEmptiesLanes) {
+TEST(NetworkScheduler, HasPassedComparesWithTheEventRunningNow) {
   Scheduler scheduler;
-  const Scheduler::LaneId lane = scheduler.lane(ns(4));
-  bool ran = false;
-  const TimerId timer = scheduler.schedule_in_lane(lane, [&] { ran = true; });
-  scheduler.clear();
-  EXPECT_FALSE(scheduler.pending(timer));
+  const std::uint64_t reserved = scheduler.reserve_sequences(1);  // before the event below
+  std::vector<bool> answers;
+  scheduler.schedule_at(ns(10), [&] {
+    answers.push_back(scheduler.has_passed(ns(10), reserved));      // same instant, earlier key
+    answers.push_back(scheduler.has_passed(ns(10), reserved + 5));  // same instant, later key
+    answers.push_back(scheduler.has_passed(ns(9), reserved + 5));
+    answers.push_back(scheduler.has_passed(ns(11), 0));
+  });
   scheduler.run_until(ns(10));
-  EXPECT_FALSE(ran);
-  EXPECT_THROW(scheduler.lane(ns(-1)), std::logic_error);
+  EXPECT_TRUE(answers.empty());
+  // Between runs the clock stands before every event at now().
+  EXPECT_FALSE(scheduler.has_passed(ns(10), 0));
+  EXPECT_TRUE(scheduler.has_passed(ns(9), reserved + 100));
+  scheduler.run_until(ns(20));
+  EXPECT_EQ(answers, (std::vector<bool>{true, false, true, false}));
 }
 
 }  // namespace

@@ -168,5 +168,30 @@ TEST(WirelessPropagation, ChainAppliesModelsInOrderAndBoundsTheCutoff) {
   }
 }
 
+TEST(WirelessPropagation, ModelsSayWhetherTheyVaryPerFrame) {
+  // The channel reuses a transmitter's links within a step only when no model in the chain
+  // varies per frame; each model's answer must match what its rx_power_dbm does.
+  PluginLoader loader;
+  for (const char* name : {"log_distance", "friis", "two_ray_ground", "range"}) {
+    const auto model = make_model(loader, name);
+    EXPECT_FALSE(model->varies_per_frame()) << name;
+  }
+  EXPECT_TRUE(make_model(loader, "nakagami")->varies_per_frame());
+  EXPECT_TRUE(make_model(loader, "shadowing")->varies_per_frame());
+  PluginChoice per_link = choose(loader, "shadowing", PluginKind::propagation);
+  set_param(per_link, "per_frame", false);
+  EXPECT_FALSE(make_model(loader, per_link)->varies_per_frame());
+  EXPECT_FALSE(make_model(loader, "disk")->varies_per_frame());  // probability 1
+  PluginChoice lossy = choose(loader, "disk", PluginKind::propagation);
+  set_param(lossy, "probability", 0.5);
+  EXPECT_TRUE(make_model(loader, lossy)->varies_per_frame());
+
+  Scenario scenario = test::make_scenario(loader, 2);
+  scenario.network.propagation = {choose(loader, "log_distance", PluginKind::propagation)};
+  EXPECT_FALSE(PropagationChain(scenario, loader).varies_per_frame());
+  scenario.network.propagation.push_back(choose(loader, "nakagami", PluginKind::propagation));
+  EXPECT_TRUE(PropagationChain(scenario, loader).varies_per_frame());
+}
+
 }  // namespace
 }  // namespace swarmnet

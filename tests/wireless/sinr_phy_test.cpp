@@ -317,5 +317,118 @@ TEST(WirelessChannel, QuietSignalsAreTheAudibleOnesBelowTheSensingThreshold) {
   EXPECT_EQ(exact.event_cutoff_m(), exact.cutoff_m());
 }
 
+TEST(WirelessSinrPhy, AWindowOfWeakSignalsCostsNoTimer) {
+  // A window whose end can neither detect a frame nor change carrier sense is kept without a
+  // timer: a weak signal alone costs its start and its end, nothing more.
+  Scheduler scheduler;
+  RecordingListener listener;
+  Phy phy(sinr_config(), listener, &scheduler, 1);
+  arrive(scheduler, phy, 1, -90.0, us(10));
+  scheduler.run_until(us(5000));
+  EXPECT_EQ(scheduler.events_run(), 2U);
+  EXPECT_TRUE(listener.log.empty());
+}
+
+TEST(WirelessSinrPhy, AStrongSignalJoiningAWeakWindowIsDetectedWhereThatWindowEnds) {
+  // Window 1 opens with a weak signal at 10 us and passes (at 14 us) with nothing to do. A weak
+  // signal at 20 us opens window 2; a strong one joins it at 22 us and is detected when window 2
+  // ends, at 24 us, not 4 us after its own arrival.
+  Scheduler scheduler;
+  RecordingListener listener;
+  Phy phy(sinr_config(), listener, &scheduler, 1);
+  arrive(scheduler, phy, 1, -90.0, us(10));
+  arrive(scheduler, phy, 2, -91.0, us(20));
+  arrive(scheduler, phy, 3, -55.0, us(22));
+  scheduler.run_until(us(24));
+  EXPECT_FALSE(phy.medium_busy());
+  scheduler.run_until(us(24) + SimTime{1});
+  EXPECT_EQ(phy.state(), Phy::State::receiving);
+  scheduler.run_until(us(5000));
+  EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "idle", "rx 3"}));
+}
+
+TEST(WirelessSinrPhy, WeakSignalsThatAddUpMakeTheMediumBusyWhenTheirWindowEnds) {
+  // Two -84 dBm signals in one window add up to -81 dBm: busy at the window's end (14 us).
+  Scheduler scheduler;
+  RecordingListener listener;
+  Phy phy(sinr_config(), listener, &scheduler, 1);
+  arrive(scheduler, phy, 1, -84.0, us(10));
+  arrive(scheduler, phy, 2, -84.0, us(12));
+  scheduler.run_until(us(14));
+  EXPECT_FALSE(phy.medium_busy());
+  scheduler.run_until(us(14) + SimTime{1});
+  EXPECT_TRUE(phy.medium_busy());
+  EXPECT_EQ(listener.log, (std::vector<std::string>{"busy"}));
+}
+
+TEST(WirelessSinrPhy, AWindowMattersAgainWhenASensedSignalEndsDuringIt) {
+  // Signals 1 and 2 (-84 dBm each, 3 us apart) keep the medium busy. Signal 3 (-85 dBm) opens a
+  // window 2 us before signal 1 ends: the medium goes idle then, and busy again at the window's
+  // end, where signals 2 (ending 1 us later) and 3 add up to -81.5 dBm.
+  Scheduler scheduler;
+  RecordingListener listener;
+  Phy phy(sinr_config(), listener, &scheduler, 1);
+  arrive(scheduler, phy, 1, -84.0, us(0));
+  arrive(scheduler, phy, 2, -84.0, us(3));
+  const SimTime window_start = kFrameTime - us(2);
+  arrive(scheduler, phy, 3, -85.0, window_start);
+  scheduler.run_until(kFrameTime + SimTime{1});
+  EXPECT_FALSE(phy.medium_busy());
+  scheduler.run_until(window_start + us(4));
+  EXPECT_FALSE(phy.medium_busy());
+  scheduler.run_until(window_start + us(4) + SimTime{1});
+  EXPECT_TRUE(phy.medium_busy());
+  scheduler.run_until(us(3) + kFrameTime + SimTime{1});
+  EXPECT_FALSE(phy.medium_busy());
+  EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "idle", "busy", "idle"}));
+}
+
+TEST(WirelessChannel, LinksAreReusedWithinAStepOnlyWhenNoModelVariesPerFrame) {
+  // Node 0 sends three frames one after another to node 1 at 60 m, then node 1 moves to 30 m and
+  // node 0 sends a fourth. With log_distance alone the first three arrive with one power and the
+  // fourth with a stronger one (links are recomputed when nodes move); with Nakagami fading after
+  // it every frame draws its own power.
+  const auto powers = [](bool fading) {
+    PluginLoader loader;
+    Scenario scenario = test::make_scenario(loader, 2, "dcf80211", "direct");
+    scenario.network.propagation = {test::choose(loader, "log_distance", PluginKind::propagation)};
+    if (fading) {
+      scenario.network.propagation.push_back(
+          test::choose(loader, "nakagami", PluginKind::propagation));
+    }
+    scenario.network.phy.model = PhyModel::sinr;
+    scenario.network.phy.tx_power_dbm = 40.0;  // -60 dBm at 60 m: received through any fade here
+    Scheduler scheduler;
+    Channel channel(scenario, PropagationChain(scenario, loader), scheduler, 2);
+    std::vector<RecordingListener> listeners(2);
+    std::vector<std::unique_ptr<Phy>> phys;
+    for (NodeId node = 0; node < 2; ++node) {
+      phys.push_back(
+          std::make_unique<Phy>(scenario.network.phy, listeners[node], &scheduler, node));
+      channel.attach(node, *phys.back());
+    }
+    std::vector<double> received;
+    const auto send = [&] {
+      channel.transmit(0, frame(0), us(100));
+      scheduler.run_until(scheduler.now() + us(200));
+      ASSERT_FALSE(listeners[1].log.empty());
+      EXPECT_EQ(listeners[1].log.back(), "rx " + std::to_string(channel.frames_sent()));
+      received.push_back(listeners[1].last_rx.rx_power_dbm);
+    };
+    channel.set_positions(std::vector<Vec2>{Vec2(0, 0), Vec2(60, 0)});
+    for (int i = 0; i < 3; ++i) send();
+    channel.set_positions(std::vector<Vec2>{Vec2(0, 0), Vec2(30, 0)});
+    send();
+    return received;
+  };
+  const std::vector<double> plain = powers(false);
+  EXPECT_EQ(plain[0], plain[1]);
+  EXPECT_EQ(plain[0], plain[2]);
+  EXPECT_NEAR(plain[3] - plain[0], 30.0 * std::log10(2.0), 1e-9);
+  const std::vector<double> faded = powers(true);
+  EXPECT_NE(faded[0], faded[1]);
+  EXPECT_NE(faded[1], faded[2]);
+}
+
 }  // namespace
 }  // namespace swarmnet

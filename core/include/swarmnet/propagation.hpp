@@ -37,6 +37,12 @@ class Propagation : public Plugin {
   // with distance. The channel uses it to find the distance beyond which no receiver can hear a
   // transmission, and visits only nodes inside it.
   [[nodiscard]] virtual double max_rx_power_dbm(double input_dbm, double distance_m) const = 0;
+
+  // Whether rx_power_dbm may give a link different powers for different frames (it reads
+  // link.frame_uid, e.g. to draw fading per frame). When no model in the chain does, the channel
+  // computes each transmitter's links once per step (positions do not change within a step) and
+  // reuses them for every frame it sends in that step. The default is the safe answer.
+  [[nodiscard]] virtual bool varies_per_frame() const { return true; }
 };
 
 }  // namespace swarmnet

@@ -8,6 +8,8 @@
 #include <string>
 #include <utility>
 
+#include "swarmnet/units.hpp"
+
 namespace swarmnet {
 
 namespace {
@@ -31,9 +33,11 @@ Channel::Channel(const Scenario& scenario, PropagationChain chain, Scheduler& sc
                           : cutoff_m_),
       use_grid_(scenario.network.channel.cutoff && std::isfinite(event_cutoff_m_)),
       has_quiet_signals_(event_dbm_ > audibility_dbm_),
+      cache_links_(!chain_.varies_per_frame()),
       phys_(node_count, nullptr),
       positions_(node_count, Vec2::Zero()),
-      arena_bounds_{0.0, 0.0, scenario.arena.width_m, scenario.arena.height_m} {
+      arena_bounds_{0.0, 0.0, scenario.arena.width_m, scenario.arena.height_m},
+      step_links_(node_count) {
   candidates_.reserve(node_count);
   rebuild_grid();
 }
@@ -50,6 +54,7 @@ void Channel::set_positions(std::span<const Vec2> positions) {
   }
   std::copy(positions.begin(), positions.end(), positions_.begin());
   positions_snapshot_.reset();
+  step_links_.assign(positions_.size(), nullptr);
   rebuild_grid();
 }
 
@@ -88,20 +93,42 @@ void Channel::transmit(NodeId transmitter, Frame frame, SimTime duration) {
   scheduler_.schedule_in(duration, [&tx_phy] { tx_phy.end_transmission(); });
   if (has_quiet_signals_) remember_on_air(frame, duration);
 
+  std::shared_ptr<const Links> links = cache_links_ ? step_links_[transmitter] : nullptr;
+  if (!links) {
+    links = compute_links(transmitter, uid);
+    if (cache_links_) step_links_[transmitter] = links;
+  }
+  if (links->empty()) return;
+
+  const std::uint32_t index = acquire_fanout();
+  FrameFanout& fanout = *fanouts_[index];
+  // Sequence numbers as if each receiver's start and end had been scheduled now, in arrival
+  // order; both streams run in that order.
+  fanout.first_sequence = scheduler_.reserve_sequences(2 * links->size());
+  fanout.links = std::move(links);
+  fanout.frame = std::move(frame);
+  fanout.sent = scheduler_.now();
+  fanout.duration = duration;
+  fanout.next_start = 0;
+  fanout.next_end = 0;
+  schedule_next_start(index);
+  schedule_next_end(index);
+}
+
+std::shared_ptr<const Channel::Links> Channel::compute_links(NodeId transmitter,
+                                                             std::uint64_t uid) {
   const Vec2 tx_position = positions_[transmitter];
   candidates_.clear();
+  auto links = std::make_shared<Links>();
   if (use_grid_) {
-    if (event_cutoff_m_ <= 0.0) return;
-    // In cell order: the arrivals are sorted below, so candidates need no order of their own.
+    if (event_cutoff_m_ <= 0.0) return links;
+    // In cell order: the links are sorted below, so candidates need no order of their own.
     grid_.for_each_candidate(tx_position, event_cutoff_m_,
                              [this](std::uint32_t node) { candidates_.push_back(node); });
   } else {
     for (NodeId node = 0; node < positions_.size(); ++node) candidates_.push_back(node);
   }
-
-  const std::uint32_t index = acquire_fanout();
-  FrameFanout& fanout = *fanouts_[index];
-  fanout.arrivals.clear();
+  links->reserve(candidates_.size());
   for (const NodeId receiver : candidates_) {
     if (receiver == transmitter) continue;
     const Vec2& rx_position = positions_[receiver];
@@ -110,30 +137,14 @@ void Channel::transmit(NodeId transmitter, Frame frame, SimTime duration) {
     const RadioLink link{transmitter, receiver, tx_position, rx_position, distance_m, uid};
     const double power_dbm = chain_.rx_power_dbm(tx_power_dbm_, link) + rx_gain_db_;
     if (power_dbm < event_dbm_) continue;  // inaudible, or quiet: see quiet_signals()
-    fanout.arrivals.push_back(
-        Arrival{propagation_delay(distance_m), receiver, 0, phys_[receiver], power_dbm});
+    links->push_back(Link{propagation_delay(distance_m), receiver, phys_[receiver], power_dbm,
+                          dbm_to_milliwatts(power_dbm)});
   }
-  if (fanout.arrivals.empty()) {
-    free_fanouts_.push_back(index);
-    return;
-  }
-  // Arrival order (receivers at the same distance by id), which both streams run in; sequence
-  // numbers as if each receiver's start and end had been scheduled now, in that order.
-  std::sort(fanout.arrivals.begin(), fanout.arrivals.end(), [](const Arrival& a, const Arrival& b) {
+  // Arrival order; receivers at the same distance by id.
+  std::sort(links->begin(), links->end(), [](const Link& a, const Link& b) {
     return a.delay != b.delay ? a.delay < b.delay : a.receiver < b.receiver;
   });
-  std::uint64_t sequence = scheduler_.reserve_sequences(2 * fanout.arrivals.size());
-  for (Arrival& arrival : fanout.arrivals) {
-    arrival.sequence = sequence;
-    sequence += 2;
-  }
-  fanout.frame = std::move(frame);
-  fanout.sent = scheduler_.now();
-  fanout.duration = duration;
-  fanout.next_start = 0;
-  fanout.next_end = 0;
-  schedule_next_start(index);
-  schedule_next_end(index);
+  return links;
 }
 
 void Channel::remember_on_air(const Frame& frame, SimTime duration) {
@@ -190,37 +201,44 @@ std::uint32_t Channel::acquire_fanout() {
 
 void Channel::schedule_next_start(std::uint32_t index) {
   FrameFanout& fanout = *fanouts_[index];
-  const Arrival& arrival = fanout.arrivals[fanout.next_start];
-  scheduler_.schedule_reserved(fanout.sent + arrival.delay, arrival.sequence, [this, index] {
-    // Starts that are due next are run here, without a round trip through the heap.
-    FrameFanout& f = *fanouts_[index];
-    while (true) {
-      const Arrival& a = f.arrivals[f.next_start++];
-      a.phy->signal_start(f.frame.uid, a.power_dbm);
-      if (f.next_start == f.arrivals.size()) return;
-      const Arrival& next = f.arrivals[f.next_start];
-      if (!scheduler_.advance_if_next(f.sent + next.delay, next.sequence)) break;
-    }
-    schedule_next_start(index);
-  });
+  const std::size_t i = fanout.next_start;
+  scheduler_.schedule_reserved(
+      fanout.sent + (*fanout.links)[i].delay, fanout.first_sequence + 2 * i, [this, index] {
+        // Starts that are due next are run here, without a round trip through the heap.
+        FrameFanout& f = *fanouts_[index];
+        const Links& links = *f.links;
+        while (true) {
+          const Link& link = links[f.next_start++];
+          link.phy->signal_start(f.frame.uid, link.power_dbm, link.power_mw);
+          if (f.next_start == links.size()) return;
+          if (!scheduler_.advance_if_next(f.sent + links[f.next_start].delay,
+                                          f.first_sequence + 2 * f.next_start)) {
+            break;
+          }
+        }
+        schedule_next_start(index);
+      });
 }
 
 void Channel::schedule_next_end(std::uint32_t index) {
   FrameFanout& fanout = *fanouts_[index];
-  const Arrival& arrival = fanout.arrivals[fanout.next_end];
+  const std::size_t i = fanout.next_end;
   scheduler_.schedule_reserved(
-      fanout.sent + arrival.delay + fanout.duration, arrival.sequence + 1, [this, index] {
+      fanout.sent + (*fanout.links)[i].delay + fanout.duration, fanout.first_sequence + 2 * i + 1,
+      [this, index] {
         FrameFanout& f = *fanouts_[index];
+        const Links& links = *f.links;
         while (true) {
-          const Arrival& a = f.arrivals[f.next_end++];
-          a.phy->signal_end(f.frame, a.power_dbm);
-          if (f.next_end == f.arrivals.size()) {
+          const Link& link = links[f.next_end++];
+          link.phy->signal_end(f.frame, link.power_dbm);
+          if (f.next_end == links.size()) {
             // Recycled only now: the receivers' callbacks above read the frame.
+            f.links.reset();
             free_fanouts_.push_back(index);
             return;
           }
-          const Arrival& next = f.arrivals[f.next_end];
-          if (!scheduler_.advance_if_next(f.sent + next.delay + f.duration, next.sequence + 1)) {
+          if (!scheduler_.advance_if_next(f.sent + links[f.next_end].delay + f.duration,
+                                          f.first_sequence + 2 * f.next_end + 1)) {
             break;
           }
         }

@@ -19,6 +19,10 @@
 // stream (starts, ends) walks them, each step scheduled with the sequence number reserved for it
 // when the frame was sent. Events therefore run in exactly the order per-receiver events would.
 //
+// Link reuse: positions are fixed within a step, so when no propagation model varies per frame
+// (Propagation::varies_per_frame) a transmitter's receivers, delays and powers are computed at its
+// first frame of the step and shared by its later ones (a busy node sends several per step).
+//
 // Candidates: with the cutoff on (scenario.network.channel.cutoff) and a finite cutoff distance,
 // the nodes of a uniform grid neighbourhood closer than the cutoff; otherwise every node. Both
 // give the same frames at the same receivers at the same times, because a node at or beyond the
@@ -85,14 +89,15 @@ class Channel final : public QuietSignalSource {
                      std::vector<QuietSignal>& out) const override;
 
  private:
-  // A frame on its way to its receivers.
-  struct Arrival {
+  // A receiver of a transmitter's frames, as the channel computed it at transmission.
+  struct Link {
     SimTime delay;
     NodeId receiver;
-    std::uint64_t sequence;  // of the signal's start; its end has sequence + 1
     Phy* phy;
     double power_dbm;
+    double power_mw;
   };
+  using Links = std::vector<Link>;  // by (delay, receiver): arrival order
   // A frame that may still reach someone, for quiet-signal queries.
   struct OnAir {
     std::uint64_t uid;
@@ -105,7 +110,8 @@ class Channel final : public QuietSignalSource {
     Frame frame;
     SimTime sent{};
     SimTime duration{};
-    std::vector<Arrival> arrivals;  // by (delay, receiver); sequences ascending
+    std::shared_ptr<const Links> links;
+    std::uint64_t first_sequence = 0;  // link i's signal starts with first_sequence + 2 i
     std::size_t next_start = 0;
     std::size_t next_end = 0;
   };
@@ -113,6 +119,8 @@ class Channel final : public QuietSignalSource {
   // Updates the bounds, the grid (if used) and longest_reach_ after the positions changed.
   void rebuild_grid();
   void remember_on_air(const Frame& frame, SimTime duration);
+  // The receivers that get `transmitter`'s frame `uid` as events, in arrival order.
+  [[nodiscard]] std::shared_ptr<const Links> compute_links(NodeId transmitter, std::uint64_t uid);
   std::uint32_t acquire_fanout();
   void schedule_next_start(std::uint32_t fanout);
   void schedule_next_end(std::uint32_t fanout);
@@ -127,6 +135,7 @@ class Channel final : public QuietSignalSource {
   double event_cutoff_m_;
   bool use_grid_;
   bool has_quiet_signals_;
+  bool cache_links_;  // the chain gives a link the same power for every frame
   std::vector<Phy*> phys_;
   std::vector<Vec2> positions_;
   std::shared_ptr<const std::vector<Vec2>> positions_snapshot_;  // made at the step's first frame
@@ -138,6 +147,8 @@ class Channel final : public QuietSignalSource {
   Rect grid_bounds_;
   bool grid_ready_ = false;
   std::vector<NodeId> candidates_;  // scratch, reused by every transmission
+  // Per transmitter, its links in the current step (cache_links_ only; emptied when nodes move).
+  std::vector<std::shared_ptr<const Links>> step_links_;
   // Fan-outs are recycled (by index, so growth does not move a live one's address in use).
   std::vector<std::unique_ptr<FrameFanout>> fanouts_;
   std::vector<std::uint32_t> free_fanouts_;

@@ -62,9 +62,8 @@ Phy::Phy(const PhyConfig& config, PhyListener& listener, Scheduler* scheduler, s
       audible_dbm_(audibility_threshold_dbm(config)),
       energy_detection_mw_(dbm_to_milliwatts(config.energy_detection_dbm)),
       cca_threshold_mw_(dbm_to_milliwatts(config.cca_threshold_dbm)) {
-  if (sinr_model()) {
-    if (scheduler_ == nullptr) throw std::logic_error("PHY: the sinr model needs a scheduler");
-    detection_lane_ = scheduler_->lane(kDetectionWindow);
+  if (sinr_model() && scheduler_ == nullptr) {
+    throw std::logic_error("PHY: the sinr model needs a scheduler");
   }
 }
 
@@ -167,15 +166,53 @@ void Phy::start_transmission() {
   reported_busy_ = true;
   if (sinr_model()) {
     lock_.reset();  // half duplex: the frame being received is lost
-    if (detection_timer_ != kNoTimer) scheduler_->cancel(detection_timer_);
-    detection_timer_ = kNoTimer;
-    candidates_.clear();
-    leave_window();
+    close_window();
   }
 }
 
 void Phy::leave_window() {
   for (Arrival& a : arrivals_) a.in_window = false;
+}
+
+void Phy::open_window() {
+  window_open_ = true;
+  window_end_ = scheduler_->now() + kDetectionWindow;
+  // The key a timer scheduled now would get: armed later, it runs exactly where it would have.
+  window_sequence_ = scheduler_->reserve_sequences(1);
+}
+
+void Phy::arm_window_if_needed(bool strong_candidate) {
+  if (!window_open_ || detection_timer_ != kNoTimer) return;
+  // An open window means no lock and no transmission: its end only judges the candidates and
+  // starts sensing them. A candidate strong enough to be detected arms the timer as it arrives,
+  // so an unarmed window has none.
+  bool matters = strong_candidate;
+  if (!matters && !reported_busy_) {
+    // Would sensing every arriving signal (as medium_busy() does once the window has ended)
+    // make the medium busy? If already busy, more signals keep it so.
+    const double total = total_mw();
+    matters = total > 0.0 && (total >= cca_threshold_mw_ || total >= energy_detection_mw_);
+  }
+  if (!matters) return;
+  detection_timer_ = scheduler_->schedule_reserved(window_end_, window_sequence_, [this] {
+    detection_timer_ = kNoTimer;
+    end_detection_window();
+  });
+}
+
+void Phy::close_passed_window() {
+  if (window_open_ && detection_timer_ == kNoTimer &&
+      scheduler_->has_passed(window_end_, window_sequence_)) {
+    close_window();
+  }
+}
+
+void Phy::close_window() {
+  if (detection_timer_ != kNoTimer) scheduler_->cancel(detection_timer_);
+  detection_timer_ = kNoTimer;
+  window_open_ = false;
+  candidates_.clear();
+  leave_window();
 }
 
 void Phy::end_transmission() {
@@ -185,29 +222,32 @@ void Phy::end_transmission() {
 }
 
 void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm) {
+  signal_start(frame_uid, rx_power_dbm, dbm_to_milliwatts(rx_power_dbm));
+}
+
+void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_power_mw) {
   if (!sinr_model()) {
     arrivals_.push_back(Arrival{frame_uid, rx_power_dbm});
     report_busy_change();
     return;
   }
+  close_passed_window();
   const SimTime now = scheduler_->now();
-  arrivals_.push_back(Arrival{frame_uid, rx_power_dbm, dbm_to_milliwatts(rx_power_dbm), now});
+  arrivals_.push_back(Arrival{frame_uid, rx_power_dbm, rx_power_mw, now});
   if (lock_) {
     note_interference_change();
   } else if (!transmitting_) {
     candidates_.push_back(frame_uid);
     arrivals_.back().in_window = true;
-    if (detection_timer_ == kNoTimer) {
-      detection_timer_ = scheduler_->schedule_in_lane(detection_lane_, [this] {
-        detection_timer_ = kNoTimer;
-        end_detection_window();
-      });
-    }
+    if (!window_open_) open_window();
+    arm_window_if_needed(rx_power_dbm >= config_.cca_threshold_dbm);
   }
-  report_busy_change();
+  // No carrier-sense change is possible here: locked or transmitting, the medium is busy anyway,
+  // and otherwise the new signal is in the detection window, not sensed yet.
 }
 
 void Phy::end_detection_window() {
+  window_open_ = false;
   // Swapped into a second member rather than a local: both buffers keep their capacity, so a
   // window allocates nothing, and signals starting during detection go to a fresh candidates_.
   window_.clear();
@@ -243,6 +283,7 @@ void Phy::note_interference_change() {
 }
 
 void Phy::signal_end(const Frame& frame, double rx_power_dbm) {
+  if (sinr_model()) close_passed_window();
   const auto it = std::find_if(arrivals_.begin(), arrivals_.end(),
                                [&](const Arrival& a) { return a.frame_uid == frame.uid; });
   if (it == arrivals_.end()) return;  // not tracked: nothing to decide
@@ -269,7 +310,10 @@ void Phy::signal_end(const Frame& frame, double rx_power_dbm) {
     return;
   }
   if (lock_) note_interference_change();
-  report_busy_change();
+  // A signal's end lowers the sensed power: an idle medium stays idle (a float sum of positive
+  // terms never grows when one is dropped).
+  if (reported_busy_) report_busy_change();
+  arm_window_if_needed(false);
 }
 
 double Phy::success_probability(const Lock& lock, const Frame& frame, SimTime end,

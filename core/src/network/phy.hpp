@@ -141,7 +141,9 @@ class Phy {
   void start_transmission();
   void end_transmission();
 
-  // A signal's first and last bit reach this node.
+  // A signal's first and last bit reach this node. `rx_power_mw` is rx_power_dbm in milliwatts
+  // (the channel computes it once per link and step); the two-argument form converts.
+  void signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_power_mw);
   void signal_start(std::uint64_t frame_uid, double rx_power_dbm);
   void signal_end(const Frame& frame, double rx_power_dbm);
 
@@ -165,6 +167,13 @@ class Phy {
   [[nodiscard]] bool sinr_model() const { return config_.model == PhyModel::sinr; }
   [[nodiscard]] double total_mw() const;
   void report_busy_change();
+  void open_window();
+  // Arms the open window's timer if its end would detect a frame (`strong_candidate`: one that
+  // just joined is strong enough) or change carrier sense.
+  void arm_window_if_needed(bool strong_candidate);
+  // Closes an open, unarmed window whose end has passed (its end changed nothing).
+  void close_passed_window();
+  void close_window();
   void end_detection_window();
   void detect_preamble(const std::vector<std::uint64_t>& candidates);
   void note_interference_change();
@@ -187,9 +196,16 @@ class Phy {
   bool transmitting_ = false;
   bool reported_busy_ = false;
   std::vector<Arrival> arrivals_;  // signals currently arriving, in arrival order
-  // sinr state
-  TimerId detection_timer_ = kNoTimer;
-  Scheduler::LaneId detection_lane_ = 0;   // every PHY's windows share one FIFO (scheduler.hpp)
+  // sinr state. The detection window is kept without a timer while its end can change nothing
+  // (no candidate strong enough to detect, no carrier-sense change): at a 120 m range most
+  // arrivals are far too weak, and a timer per idle receiver per frame was a third of all events.
+  // Its key (end, reserved sequence number) is kept, and the timer is armed at that key as soon
+  // as the end matters (arm_window_if_needed), so everything runs in the order it would with a
+  // timer per window; a window that passed without one is closed at the PHY's next event.
+  bool window_open_ = false;
+  SimTime window_end_{};
+  std::uint64_t window_sequence_ = 0;
+  TimerId detection_timer_ = kNoTimer;     // the armed window's timer
   std::vector<std::uint64_t> candidates_;  // frames whose preamble started in the window
   std::vector<std::uint64_t> window_;      // the window being judged (see end_detection_window)
   std::optional<Lock> lock_;

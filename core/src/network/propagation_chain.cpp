@@ -1,5 +1,6 @@
 #include "network/propagation_chain.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <utility>
 
@@ -35,6 +36,11 @@ double PropagationChain::max_rx_power_dbm(double tx_power_dbm, double distance_m
   double power = tx_power_dbm;
   for (const auto& model : models_) power = model->max_rx_power_dbm(power, distance_m);
   return power;
+}
+
+bool PropagationChain::varies_per_frame() const {
+  return std::any_of(models_.begin(), models_.end(),
+                     [](const auto& model) { return model->varies_per_frame(); });
 }
 
 double cutoff_distance_m(const PropagationChain& chain, double tx_power_dbm, double threshold_dbm) {

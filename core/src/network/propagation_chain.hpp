@@ -25,6 +25,9 @@ class PropagationChain {
   // Each model's max_rx_power_dbm bound applied in the same way.
   [[nodiscard]] double max_rx_power_dbm(double tx_power_dbm, double distance_m) const;
 
+  // Whether any model's power depends on the frame (Propagation::varies_per_frame).
+  [[nodiscard]] bool varies_per_frame() const;
+
   [[nodiscard]] std::size_t size() const { return models_.size(); }
 
  private:

@@ -10,6 +10,8 @@ namespace swarmnet {
 namespace {
 
 constexpr std::size_t kArity = 4;
+// Slots are numbered in 32 bits (TimerId keeps the slot + 1 in its low half).
+constexpr std::size_t kMaxSlots = 0xffffffffU;
 
 // A TimerId packs the slot (low 32 bits, +1 so that no id is kNoTimer) and the slot's generation
 // (high 32 bits). A generation wraps after 2^32 reuses of one slot; an id kept that long could
@@ -44,16 +46,16 @@ TimerId Scheduler::push_event(SimTime time, std::uint64_t sequence, Callback cal
                            std::to_string(time.count()) + " ns, now " +
                            std::to_string(now_.count()) + " ns)");
   }
-  const std::uint32_t slot = take_slot(std::move(callback), false);
+  const std::uint32_t slot = take_slot(std::move(callback));
   heap_push(Entry{time, sequence, slot, slots_[slot].generation});
   return make_id(slot, slots_[slot].generation);
 }
 
-std::uint32_t Scheduler::take_slot(Callback callback, bool in_lane) {
+std::uint32_t Scheduler::take_slot(Callback callback) {
   if (!callback) throw std::logic_error("Scheduler: empty callback");
   std::uint32_t slot = 0;
   if (free_slots_.empty()) {
-    if (slots_.size() >= kLaneBit) throw std::length_error("Scheduler: too many pending events");
+    if (slots_.size() >= kMaxSlots) throw std::length_error("Scheduler: too many pending events");
     slot = static_cast<std::uint32_t>(slots_.size());
     slots_.emplace_back();
   } else {
@@ -63,63 +65,8 @@ std::uint32_t Scheduler::take_slot(Callback callback, bool in_lane) {
   Slot& s = slots_[slot];
   s.callback = std::move(callback);
   s.armed = true;
-  s.in_lane = in_lane;
   ++live_;
   return slot;
-}
-
-Scheduler::LaneId Scheduler::lane(SimTime delay) {
-  if (delay < kTimeZero) {
-    throw std::logic_error("Scheduler: negative lane delay (" + std::to_string(delay.count()) +
-                           " ns)");
-  }
-  for (LaneId id = 0; id < lanes_.size(); ++id) {
-    if (lanes_[id].delay == delay) return id;
-  }
-  lanes_.push_back(Lane{delay, {}, false});
-  return static_cast<LaneId>(lanes_.size() - 1);
-}
-
-TimerId Scheduler::schedule_in_lane(LaneId lane, Callback callback) {
-  Lane& l = lanes_.at(lane);
-  const SimTime time = l.delay > kTimeNever - now_ ? kTimeNever : now_ + l.delay;
-  const std::uint32_t slot = take_slot(std::move(callback), true);
-  // Later than every timer already in the lane: the clock never goes back, sequences only grow.
-  l.timers.push_back(Entry{time, next_sequence_++, slot, slots_[slot].generation});
-  if (!l.in_heap) push_lane_head(lane);
-  return make_id(slot, slots_[slot].generation);
-}
-
-void Scheduler::push_lane_head(LaneId lane) {
-  Lane& l = lanes_[lane];
-  while (!l.timers.empty() && !is_live(l.timers.front())) l.timers.pop_front();
-  if (l.timers.empty()) return;
-  const Entry& head = l.timers.front();
-  heap_push(Entry{head.time, head.sequence, kLaneBit | lane, 0});
-  l.in_heap = true;
-}
-
-void Scheduler::run_lane(const Entry& entry) {
-  const LaneId lane = entry.slot & ~kLaneBit;
-  Lane& l = lanes_[lane];
-  l.in_heap = false;
-  while (!l.timers.empty() && !is_live(l.timers.front())) l.timers.pop_front();
-  if (l.timers.empty()) return;
-  const Entry timer = l.timers.front();
-  if (timer.time != entry.time || timer.sequence != entry.sequence) {
-    // The timer this entry stood for was cancelled; the next one waits for its own turn.
-    push_lane_head(lane);
-    return;
-  }
-  l.timers.pop_front();
-  // The head goes back before the callback runs, as other pending events are: the callback may
-  // add to this lane (which then finds in_heap set) or cancel the next timer (skipped later).
-  push_lane_head(lane);
-  now_ = timer.time;
-  Callback callback = std::move(slots_[timer.slot].callback);
-  release(timer.slot);
-  ++events_run_;
-  callback();
 }
 
 TimerId Scheduler::schedule_in(SimTime delay, Callback callback) {
@@ -135,6 +82,7 @@ bool Scheduler::advance_if_next(SimTime time, std::uint64_t sequence) {
   // A tombstone at the front may hide a later live event: then the answer is a conservative no.
   if (!heap_.empty() && !earlier(Entry{time, sequence, 0, 0}, heap_.front())) return false;
   now_ = time;
+  current_sequence_ = sequence;
   ++events_run_;
   return true;
 }
@@ -149,9 +97,7 @@ bool Scheduler::pending(TimerId timer) const {
 void Scheduler::cancel(TimerId timer) {
   if (!pending(timer)) return;
   const auto slot = static_cast<std::uint32_t>((timer & 0xffffffffULL) - 1);
-  const bool in_lane = slots_[slot].in_lane;
   release(slot);
-  if (in_lane) return;  // its lane skips it when it reaches the front
   ++tombstones_;
   if (tombstones_ > 64 && tombstones_ * 2 > heap_.size()) compact();
 }
@@ -172,15 +118,12 @@ std::uint64_t Scheduler::run_until(SimTime end) {
   while (!heap_.empty() && heap_.front().time < end) {
     const Entry entry = heap_.front();
     heap_pop();
-    if ((entry.slot & kLaneBit) != 0) {
-      run_lane(entry);
-      continue;
-    }
     if (!is_live(entry)) {
       --tombstones_;
       continue;
     }
     now_ = entry.time;
+    current_sequence_ = entry.sequence;
     // Free the slot before running: the callback may schedule (reusing it) or cancel its own id.
     Callback callback = std::move(slots_[entry.slot].callback);
     release(entry.slot);
@@ -202,16 +145,11 @@ void Scheduler::clear() {
     release(slot);
   }
   heap_.clear();
-  for (Lane& lane : lanes_) {
-    lane.timers.clear();
-    lane.in_heap = false;
-  }
   tombstones_ = 0;
   doomed.clear();
 }
 
 bool Scheduler::is_live(const Entry& entry) const {
-  if ((entry.slot & kLaneBit) != 0) return true;  // a lane's stand-in: run_lane sorts it out
   const Slot& s = slots_[entry.slot];
   return s.armed && s.generation == entry.generation;
 }

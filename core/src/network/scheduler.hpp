@@ -7,11 +7,10 @@
 // entry behind as a tombstone that is skipped when it surfaces (lazy deletion); when tombstones
 // outnumber live entries the heap is compacted, so cancelled timers never accumulate.
 //
-// Lanes: timers that all share one delay (the PHY's 4 us preamble-detection window, opened at
-// nearly every receiver of every frame) are scheduled in (time, sequence) order by construction,
-// so a FIFO per delay keeps them sorted without a heap entry each; one heap entry stands for a
-// lane's earliest timer. Sequence numbers are taken exactly as for other events, so the order
-// events run in does not change.
+// Reserved keys: a component may take an event's sequence number now and schedule (or never
+// schedule) the event later at that key (reserve_sequences / schedule_reserved); it then runs
+// exactly where it would have. The channel hands a frame to its receivers this way, and the PHY
+// arms its preamble-detection timer only when the window's end can change anything.
 //
 // Cost (docs/performance.md): the channel schedules two events per receiver of every frame, so
 // the callback type stores captures of up to EventCallback::kInlineBytes inline (no allocation
@@ -21,7 +20,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <functional>
 #include <new>
 #include <type_traits>
@@ -131,11 +129,6 @@ class Scheduler {
   // Runs `callback` after `delay` (>= 0, else std::logic_error); saturates at kTimeNever.
   TimerId schedule_in(SimTime delay, Callback callback);
 
-  using LaneId = std::uint32_t;
-  // The lane of timers with this delay (>= 0), made on first use.
-  LaneId lane(SimTime delay);
-  // As schedule_in(the lane's delay, callback), kept in the lane instead of the heap.
-  TimerId schedule_in_lane(LaneId lane, Callback callback);
   // Reserves `count` consecutive insertion sequence numbers and returns the first. An event later
   // scheduled with schedule_reserved(time, sequence, ...) runs exactly where an event scheduled
   // at `time` at the moment of the reservation would have run. The channel uses it to hand a
@@ -150,6 +143,13 @@ class Scheduler {
   // run_until), advances the clock to `time`, counts it as run and returns true; the caller then
   // does its work at once, saving a heap push and pop. Otherwise returns false and changes nothing.
   bool advance_if_next(SimTime time, std::uint64_t sequence);
+  // Whether an event at key (time, sequence) would have run by now: before the event running now,
+  // or, between runs, at a time before now(). A component that keeps a timer it has not armed (a
+  // reserved key) asks this to know whether that moment has passed.
+  [[nodiscard]] bool has_passed(SimTime time, std::uint64_t sequence) const {
+    return earlier(Entry{time, sequence, 0, 0},
+                   Entry{now_, running_ ? current_sequence_ : 0, 0, 0});
+  }
   // Cancels a pending event. A fired, cancelled, unknown or kNoTimer id is ignored.
   void cancel(TimerId timer);
   [[nodiscard]] bool pending(TimerId timer) const;
@@ -173,7 +173,6 @@ class Scheduler {
     Callback callback;
     std::uint32_t generation = 1;  // bumped on release, so stale ids and entries do not match
     bool armed = false;
-    bool in_lane = false;  // a cancelled lane timer leaves no heap tombstone
   };
   struct Entry {
     SimTime time;
@@ -184,20 +183,8 @@ class Scheduler {
   static bool earlier(const Entry& a, const Entry& b) {
     return a.time != b.time ? a.time < b.time : a.sequence < b.sequence;
   }
-  // A heap entry whose slot has this bit stands for the lane (slot & ~kLaneBit).
-  static constexpr std::uint32_t kLaneBit = 0x80000000U;
-  struct Lane {
-    SimTime delay;
-    std::deque<Entry> timers;  // (time, sequence) ascending
-    bool in_heap = false;      // whether a heap entry stands for timers.front()
-  };
-
   TimerId push_event(SimTime time, std::uint64_t sequence, Callback callback);
-  std::uint32_t take_slot(Callback callback, bool in_lane);
-  // Drops cancelled timers from the lane's front and, if any is left, puts its entry in the heap.
-  void push_lane_head(LaneId lane);
-  // The heap entry `entry` for a lane surfaced: runs the lane's first timer if it is the one.
-  void run_lane(const Entry& entry);
+  std::uint32_t take_slot(Callback callback);
   [[nodiscard]] bool is_live(const Entry& entry) const;
   void release(std::uint32_t slot);
   void compact();
@@ -210,6 +197,7 @@ class Scheduler {
   SimTime now_{kTimeZero};
   SimTime run_end_{kTimeZero};  // the bound of the run_until in progress
   bool running_ = false;
+  std::uint64_t current_sequence_ = 0;  // of the event running now (while running_)
   std::uint64_t next_sequence_ = 0;
   std::uint64_t events_run_ = 0;
   std::size_t live_ = 0;
@@ -217,7 +205,6 @@ class Scheduler {
   std::vector<Entry> heap_;
   std::vector<Slot> slots_;
   std::vector<std::uint32_t> free_slots_;
-  std::vector<Lane> lanes_;
 };
 
 }  // namespace swarmnet

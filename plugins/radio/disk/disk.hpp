@@ -14,6 +14,8 @@ class Disk final : public Propagation {
 
   [[nodiscard]] double rx_power_dbm(double input_dbm, const RadioLink& link) const override;
   [[nodiscard]] double max_rx_power_dbm(double input_dbm, double distance_m) const override;
+  // Only a link that connects with probability < 1 draws per frame.
+  [[nodiscard]] bool varies_per_frame() const override { return probability_ < 1.0; }
 
  private:
   [[nodiscard]] bool in_range(double distance_m) const {

@@ -12,6 +12,7 @@ class LogDistance final : public Propagation {
 
   [[nodiscard]] double rx_power_dbm(double input_dbm, const RadioLink& link) const override;
   [[nodiscard]] double max_rx_power_dbm(double input_dbm, double distance_m) const override;
+  [[nodiscard]] bool varies_per_frame() const override { return false; }
 
   [[nodiscard]] double loss_db(double distance_m) const;
 

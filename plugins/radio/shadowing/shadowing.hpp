@@ -18,6 +18,7 @@ class Shadowing final : public Propagation {
 
   [[nodiscard]] double rx_power_dbm(double input_dbm, const RadioLink& link) const override;
   [[nodiscard]] double max_rx_power_dbm(double input_dbm, double distance_m) const override;
+  [[nodiscard]] bool varies_per_frame() const override { return per_frame_; }
 
  private:
   double sigma_db_;

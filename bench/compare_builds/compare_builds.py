@@ -1,0 +1,112 @@
+#!/usr/bin/env python3
+"""Side-by-side network-half cost of two SwarmNet builds on the same scenarios.
+
+    python3 bench/compare_builds/compare_builds.py BEFORE_BUILD AFTER_BUILD
+        [--workloads paper200,paper400,paper400-feedback] [--repeats 3] [--sim-s 10]
+        [--out compare.json]
+
+Runs every workload with both builds, alternating (before, after, before, ...) so that load on a
+shared machine hits both alike, and reports the median network CPU seconds per simulated second
+(`cpu_s.network` of summary.json), the events run, and after/before. It also checks that both
+builds wrote the same delivery ratio and MAC frame count: a speed-up that changes results is
+reported as such. Writes a JSON file with every run when --out is given.
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+PAPER = os.path.join(ROOT, "configs", "paper", "evaluation.yaml")
+
+
+def paper(robots, feedback):
+    side = 500.0 * (robots / 50.0) ** 0.5
+    sets = [f"robots.count={robots}", f"arena.width_m={side:.1f}", f"arena.height_m={side:.1f}"]
+    if not feedback:
+        # As in the comparison with ns-3 (docs/validation.md): the replay's AODV has no L2 feedback.
+        sets.append("network.routing.params.link_layer_feedback=false")
+    return PAPER, sets
+
+
+WORKLOADS = {
+    "paper100": paper(100, False),
+    "paper200": paper(200, False),
+    "paper400": paper(400, False),
+    "paper400-feedback": paper(400, True),
+    "wireless": (os.path.join(ROOT, "configs", "wireless.yaml"), []),
+}
+
+
+def run_once(build, scenario, sets, sim_s, out_dir):
+    command = [os.path.join(build, "bin", "swarmnet"), "run", scenario, "--transport", "inproc",
+               "--set", f"duration_s={sim_s}", "--out", out_dir]
+    for item in sets:
+        command += ["--set", item]
+    done = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                          check=False)
+    if done.returncode != 0:
+        raise RuntimeError(f"{' '.join(command)} failed ({done.returncode}): {done.stderr.strip()}")
+    with open(os.path.join(out_dir, "summary.json"), encoding="utf-8") as f:
+        summary = json.load(f)
+    return {"cpu_network_s": summary["cpu_s"]["network"], "events": summary.get("events"),
+            "pdr": summary["pdr"], "mac_tx_frames": summary["mac"]["tx_frames"]}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("before", help="build directory of the reference")
+    parser.add_argument("after", help="build directory of the change")
+    parser.add_argument("--workloads", default="paper200,paper400,paper400-feedback",
+                        help=f"comma-separated, from {', '.join(WORKLOADS)}")
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--sim-s", type=float, default=10.0, help="simulated seconds per run")
+    parser.add_argument("--out", help="JSON file for every run and the medians")
+    args = parser.parse_args()
+    names = [name for name in args.workloads.split(",") if name]
+    unknown = [name for name in names if name not in WORKLOADS]
+    if unknown:
+        parser.error(f"unknown workload(s) {', '.join(unknown)}; known: {', '.join(WORKLOADS)}")
+    for build in (args.before, args.after):
+        if not os.path.exists(os.path.join(build, "bin", "swarmnet")):
+            parser.error(f"{build}: no bin/swarmnet (is it a SwarmNet build directory?)")
+
+    results = {}
+    with tempfile.TemporaryDirectory(prefix="swarmnet-compare-") as scratch:
+        for name in names:
+            scenario, sets = WORKLOADS[name]
+            runs = {"before": [], "after": []}
+            for repeat in range(args.repeats):
+                for label, build in (("before", args.before), ("after", args.after)):
+                    out_dir = os.path.join(scratch, f"{name}-{label}-{repeat}")
+                    runs[label].append(run_once(build, scenario, sets, args.sim_s, out_dir))
+                    print(f"{name} {label} {repeat + 1}/{args.repeats}: "
+                          f"{runs[label][-1]['cpu_network_s']:.3f} CPU-s", file=sys.stderr)
+            medians = {label: statistics.median(r["cpu_network_s"] for r in runs[label]) / args.sim_s
+                       for label in runs}
+            same = all(runs["before"][0][key] == runs["after"][0][key]
+                       for key in ("pdr", "mac_tx_frames"))
+            results[name] = {"runs": runs, "cpu_per_sim_s": medians,
+                             "after_over_before": medians["after"] / medians["before"],
+                             "same_results": same}
+
+    print(f"| workload | before (CPU-s per sim-s) | after | after/before | events before | "
+          f"events after | same PDR and MAC frames |")
+    print("|---|---|---|---|---|---|---|")
+    for name, result in results.items():
+        medians = result["cpu_per_sim_s"]
+        print(f"| {name} | {medians['before']:.4f} | {medians['after']:.4f} | "
+              f"{result['after_over_before']:.2f} | {result['runs']['before'][0]['events']} | "
+              f"{result['runs']['after'][0]['events']} | {'yes' if result['same_results'] else 'NO'} |")
+    if args.out:
+        with open(args.out, "w", encoding="utf-8") as f:
+            json.dump({"sim_s": args.sim_s, "repeats": args.repeats, "results": results}, f,
+                      indent=2)
+    return 0 if all(r["same_results"] for r in results.values()) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
