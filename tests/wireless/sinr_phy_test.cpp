@@ -60,6 +60,24 @@ TEST(WirelessErrorModel, NistCurvesOrderTheRates) {
   EXPECT_LT(chunk_success_rate(ofdm::kModes[4], std::pow(10.0, 1.2), 8000), at_12db);
 }
 
+TEST(WirelessErrorModel, CertainSuccessStartsWhereTheSeriesAlreadyGivesExactlyOne) {
+  // chunk_success_rate skips the series from certain_success_sinr on. Down to half of that SINR
+  // the series itself gives exactly 1 even for ten million bits, so the shortcut changes no
+  // result; well below it, long chunks can fail.
+  for (const ofdm::Mode& mode : ofdm::kModes) {
+    const double threshold = certain_success_sinr(mode);
+    EXPECT_GT(threshold, 1.0);
+    EXPECT_LT(threshold, 1.0e4);
+    for (const double fraction : {0.5, 0.7, 0.9, 0.999}) {
+      EXPECT_EQ(chunk_success_rate(mode, threshold * fraction, 1.0e7), 1.0)
+          << mode.rate_bps << " at " << fraction;
+    }
+    EXPECT_LT(chunk_success_rate(mode, threshold / 20.0, 1.0e7), 1.0) << mode.rate_bps;
+  }
+  // About 14 dB for BPSK 1/2 (6 Mbit/s): 11.2 dB where the error falls below 1e-30, plus 3.
+  EXPECT_NEAR(10.0 * std::log10(certain_success_sinr(ofdm::kModes[0])), 14.2, 0.1);
+}
+
 TEST(WirelessSinrPhy, NoiseFloorAndAudibility) {
   const PhyConfig config = sinr_config();
   EXPECT_NEAR(noise_floor_dbm(config), -174.0 + 73.0103 + 7.0, 1e-3);

@@ -62,14 +62,53 @@ double coded_ber(ofdm::CodeRate rate, double p) {
   return 1.0;
 }
 
+double coded_error(const ofdm::Mode& mode, double sinr) {
+  const double ber = uncoded_ber(mode.modulation, sinr);
+  if (ber == 0.0) return 0.0;
+  return std::min(coded_ber(mode.code_rate, ber), 1.0);
+}
+
+// A coded error probability this small leaves 1 - pe == 1.0 in double precision (its spacing
+// below 1 is 1.1e-16), whatever the number of bits.
+constexpr double kNegligibleError = 1.0e-30;
+
+double find_certain_success_sinr(const ofdm::Mode& mode) {
+  double low = 0.0;
+  double high = 1.0;
+  while (coded_error(mode, high) >= kNegligibleError) high *= 2.0;
+  for (int i = 0; i < 200 && high - low > 1.0e-9 * high; ++i) {
+    const double middle = 0.5 * (low + high);
+    (coded_error(mode, middle) >= kNegligibleError ? low : high) = middle;
+  }
+  // 3 dB of margin: far from where rounding in erfc or the series could matter.
+  return 2.0 * high;
+}
+
 }  // namespace
+
+double certain_success_sinr(const ofdm::Mode& mode) {
+  // Once per (modulation, code rate): the error model depends on nothing else.
+  static const auto thresholds = [] {
+    std::array<std::array<double, 3>, 4> table{};
+    for (std::size_t m = 0; m < table.size(); ++m) {
+      for (std::size_t r = 0; r < table[m].size(); ++r) {
+        ofdm::Mode combination{};
+        combination.modulation = static_cast<ofdm::Modulation>(m);
+        combination.code_rate = static_cast<ofdm::CodeRate>(r);
+        table[m][r] = find_certain_success_sinr(combination);
+      }
+    }
+    return table;
+  }();
+  return thresholds[static_cast<std::size_t>(mode.modulation)]
+                   [static_cast<std::size_t>(mode.code_rate)];
+}
 
 double chunk_success_rate(const ofdm::Mode& mode, double sinr, double bits) {
   if (bits <= 0.0) return 1.0;
-  const double ber = uncoded_ber(mode.modulation, sinr);
-  if (ber == 0.0) return 1.0;
-  const double pe = std::min(coded_ber(mode.code_rate, ber), 1.0);
-  return std::pow(1.0 - pe, bits);
+  // Most chunks of a reception near its sender are here: the formula below would give exactly 1.
+  if (sinr >= certain_success_sinr(mode)) return 1.0;
+  return std::pow(1.0 - coded_error(mode, sinr), bits);
 }
 
 }  // namespace swarmnet

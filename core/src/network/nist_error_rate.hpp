@@ -18,4 +18,9 @@ namespace swarmnet {
 // Probability that `bits` bits sent at `mode` are all received correctly at linear SINR `sinr`.
 double chunk_success_rate(const ofdm::Mode& mode, double sinr, double bits);
 
+// The linear SINR from which chunk_success_rate is exactly 1 for any number of bits (the coded
+// error probability is below 1e-30, and 1 - pe rounds to 1), with 3 dB of margin: 14.2 dB for BPSK
+// 1/2. chunk_success_rate returns 1 there without evaluating the series.
+double certain_success_sinr(const ofdm::Mode& mode);
+
 }  // namespace swarmnet

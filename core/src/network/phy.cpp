@@ -54,14 +54,16 @@ double event_threshold_dbm(const PhyConfig& config) {
 }
 
 Phy::Phy(const PhyConfig& config, PhyListener& listener, Scheduler* scheduler, std::uint64_t seed)
-    : config_(config),
-      listener_(listener),
+    : listener_(listener),
       scheduler_(scheduler),
-      seed_(seed),
+      sinr_(config.model == PhyModel::sinr),
+      cca_threshold_dbm_(config.cca_threshold_dbm),
       noise_mw_(dbm_to_milliwatts(noise_floor_dbm(config))),
-      audible_dbm_(audibility_threshold_dbm(config)),
       energy_detection_mw_(dbm_to_milliwatts(config.energy_detection_dbm)),
-      cca_threshold_mw_(dbm_to_milliwatts(config.cca_threshold_dbm)) {
+      cca_threshold_mw_(dbm_to_milliwatts(config.cca_threshold_dbm)),
+      config_(config),
+      seed_(seed),
+      audible_dbm_(audibility_threshold_dbm(config)) {
   if (sinr_model() && scheduler_ == nullptr) {
     throw std::logic_error("PHY: the sinr model needs a scheduler");
   }
@@ -240,7 +242,7 @@ void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_p
     candidates_.push_back(frame_uid);
     arrivals_.back().in_window = true;
     if (!window_open_) open_window();
-    arm_window_if_needed(rx_power_dbm >= config_.cca_threshold_dbm);
+    arm_window_if_needed(rx_power_dbm >= cca_threshold_dbm_);
   }
   // No carrier-sense change is possible here: locked or transmitting, the medium is busy anyway,
   // and otherwise the new signal is in the detection window, not sensed yet.
@@ -267,7 +269,7 @@ void Phy::detect_preamble(const std::vector<std::uint64_t>& candidates) {
     if (it == arrivals_.end()) continue;
     if (best == nullptr || it->rx_power_mw > best->rx_power_mw) best = &*it;
   }
-  if (best == nullptr || best->rx_power_dbm < config_.cca_threshold_dbm) return;
+  if (best == nullptr || best->rx_power_dbm < cca_threshold_dbm_) return;
   const double interference = total_mw() - best->rx_power_mw;
   // Quiet signals count here, but are not kept in the lock's steps: finish_lock adds them then.
   const double sinr_db =

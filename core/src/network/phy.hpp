@@ -164,7 +164,7 @@ class Phy {
     std::vector<std::pair<SimTime, double>> interference_mw;  // from each time on
   };
 
-  [[nodiscard]] bool sinr_model() const { return config_.model == PhyModel::sinr; }
+  [[nodiscard]] bool sinr_model() const { return sinr_; }
   [[nodiscard]] double total_mw() const;
   void report_busy_change();
   void open_window();
@@ -185,17 +185,13 @@ class Phy {
   [[nodiscard]] double success_probability(const Lock& lock, const Frame& frame, SimTime end,
                                            bool with_interference) const;
 
-  PhyConfig config_;
+  // Hot state first: the channel touches a PHY per receiver per frame, and signal_start and
+  // signal_end read only these first cache lines (the configuration is copied after them).
   PhyListener& listener_;
   Scheduler* scheduler_;
-  std::uint64_t seed_;
-  double noise_mw_;
-  double audible_dbm_;
-  double energy_detection_mw_;
-  double cca_threshold_mw_;
+  bool sinr_;  // config_.model == PhyModel::sinr
   bool transmitting_ = false;
   bool reported_busy_ = false;
-  std::vector<Arrival> arrivals_;  // signals currently arriving, in arrival order
   // sinr state. The detection window is kept without a timer while its end can change nothing
   // (no candidate strong enough to detect, no carrier-sense change): at a 120 m range most
   // arrivals are far too weak, and a timer per idle receiver per frame was a third of all events.
@@ -203,12 +199,21 @@ class Phy {
   // as the end matters (arm_window_if_needed), so everything runs in the order it would with a
   // timer per window; a window that passed without one is closed at the PHY's next event.
   bool window_open_ = false;
+  double cca_threshold_dbm_;
+  double noise_mw_;
+  double energy_detection_mw_;
+  double cca_threshold_mw_;
+  std::vector<Arrival> arrivals_;          // signals currently arriving, in arrival order
+  std::vector<std::uint64_t> candidates_;  // frames whose preamble started in the window
   SimTime window_end_{};
   std::uint64_t window_sequence_ = 0;
-  TimerId detection_timer_ = kNoTimer;     // the armed window's timer
-  std::vector<std::uint64_t> candidates_;  // frames whose preamble started in the window
-  std::vector<std::uint64_t> window_;      // the window being judged (see end_detection_window)
+  TimerId detection_timer_ = kNoTimer;  // the armed window's timer
   std::optional<Lock> lock_;
+  // Colder state.
+  PhyConfig config_;
+  std::uint64_t seed_;
+  double audible_dbm_;
+  std::vector<std::uint64_t> window_;  // the window being judged (see end_detection_window)
   const QuietSignalSource* quiet_source_ = nullptr;
   NodeId self_ = kNoNode;
   // Scratch for quiet-signal queries and add_quiet_interference (no allocation per reception).
