@@ -198,6 +198,66 @@ TEST(AodvProtocol, RerrFromABrokenLinkReachesEveryPrecursorUpstream) {
   EXPECT_EQ(net.aodv(0).request_queue().size(), 0U);
 }
 
+// After a break RFC 3561 (6.11) increments the destination's sequence number, so the next RREQ
+// asks for a fresher route than any that existed before the break; ns-3.37 keeps the number, so a
+// node still holding an old route of that number answers, and the route it offers may lead into
+// the break. Node 3 (a neighbour of 0 and 1 only) holds such a route to 2 through 1, and is not
+// a precursor of 1, so no RERR reaches it.
+struct StaleReplyOutcome {
+  std::uint32_t seq_before = 0;
+  std::uint32_t seq_after_break = 0;  // node 0's number for destination 2 after the RERR
+  std::uint64_t stale_replies = 0;    // RREPs node 3 sent
+  const RouteEntry* route = nullptr;  // node 0's route to 2 after the new discovery
+  std::size_t no_route_drops = 0;
+};
+
+StaleReplyOutcome reply_after_a_break(TestNetwork& net) {
+  StaleReplyOutcome out;
+  net.send(0, 2, 1);
+  net.run_until(s(1));
+  EXPECT_NE(delivery_of(net, 1), nullptr);
+  out.seq_before = net.valid_route(0, 2)->seq;
+  Rrep old;  // node 3 learns a route to 2 through 1, with the same number
+  old.destination = 2;
+  old.destination_seq = out.seq_before;
+  old.originator = 3;
+  old.hop_count = 1;
+  old.lifetime_ms = 10000;
+  net.inject(3, old, 1);
+
+  net.move(2, {200, 500});  // the destination leaves; node 1's MAC reports the next frame lost
+  net.send(0, 2, 2);
+  net.run_for(s(0.1));
+  EXPECT_EQ(net.valid_route(0, 2), nullptr);
+  out.seq_after_break = net.aodv(0).routing_table().entries().at(2).seq;
+  net.send(0, 2, 3);
+  net.run_for(s(0.5));
+  out.stale_replies = net.count(3, "control_rrep");
+  out.route = net.valid_route(0, 2);
+  out.no_route_drops = drops_with(net, DropReason::no_route);
+  return out;
+}
+
+TEST(AodvProtocol, AStaleRouteAnswersAfterABreakOnlyWithNs3sSequenceNumberRule) {
+  const std::vector<Vec2> positions{{0, 0}, {100, 0}, {200, 0}, {50, 90}};
+  TestNetwork rfc(positions, aodv_params({{"enable_hello", false}}), true);
+  const StaleReplyOutcome a = reply_after_a_break(rfc);
+  EXPECT_EQ(a.seq_after_break, a.seq_before + 1);
+  EXPECT_EQ(a.stale_replies, 0U);
+  EXPECT_EQ(a.route, nullptr);  // still searching for a route fresher than the broken one
+  EXPECT_EQ(a.no_route_drops, 0U);
+
+  TestNetwork ns3(
+      positions, aodv_params({{"enable_hello", false}, {"increment_seqno_on_break", false}}), true);
+  const StaleReplyOutcome b = reply_after_a_break(ns3);
+  EXPECT_EQ(b.seq_after_break, b.seq_before);
+  EXPECT_GE(b.stale_replies, 1U);
+  ASSERT_NE(b.route, nullptr);  // a route through node 3 to the robot that left ...
+  EXPECT_EQ(b.route->next_hop, 3U);
+  EXPECT_EQ(b.no_route_drops, 1U);  // ... where node 1 drops message 3
+  EXPECT_EQ(delivery_of(ns3, 3), nullptr);
+}
+
 TEST(AodvProtocol, HelloLossBreaksTheLinkWithoutMacFeedback) {
   TestNetwork net(line(3), aodv_params(), false);
   net.send(0, 2, 1);

@@ -53,6 +53,10 @@ TEST(AodvRoutingTable, ValidRouteExpiresToInvalidThenIsDeleted) {
   EXPECT_NE(table.find(7, s(18.5)), nullptr);
   EXPECT_EQ(table.find(7, s(18.6)), nullptr);
   EXPECT_EQ(table.size(), 0U);
+
+  RoutingTable ns3_rule(s(15), false);  // increment_seqno_on_break: false
+  ns3_rule.insert(route(7, 3, 2, 10, s(3)));
+  EXPECT_EQ(ns3_rule.find(7, s(3.5))->seq, 10U);
 }
 
 TEST(AodvRoutingTable, RouteInSearchDoesNotExpireByItself) {
@@ -238,6 +242,7 @@ TEST(AodvParameters, DefaultsAreNs3sAndDerivedTimesFollowRfc3561) {
   EXPECT_FALSE(p.destination_only);
   EXPECT_TRUE(p.gratuitous_reply);
   EXPECT_TRUE(p.enable_hello);
+  EXPECT_TRUE(p.increment_seqno_on_break);  // RFC 3561, not ns-3.37
   EXPECT_FALSE(p.enable_local_repair);
   EXPECT_EQ(p.max_repair_ttl(), 10U);
 

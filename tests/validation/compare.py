@@ -41,6 +41,44 @@ def _per_delivered(doc):
     return control / delivered
 
 
+def pool(docs):
+    """One document of the fields compare() reads, aggregated over runs (seeds) of one case:
+    counts and CPU seconds add up, the delivery ratio is the sum delivered / sum of unicast sent,
+    mean delay and hops are means over all deliveries; a percentile cannot be pooled from
+    summaries and is None."""
+    def total(*keys):
+        values = [_get(doc, keys) for doc in docs]
+        return None if any(v is None for v in values) else sum(values)
+
+    def per_delivery(*keys):
+        pairs = [(_get(doc, keys), doc["packets"]["delivered"]) for doc in docs]
+        pairs = [(v, n) for v, n in pairs if n > 0]
+        if not pairs or any(v is None for v, _ in pairs):
+            return None
+        return sum(v * n for v, n in pairs) / sum(n for _, n in pairs)
+
+    sent, broadcast = total("packets", "sent"), total("packets", "broadcast_sent") or 0
+    delivered = total("packets", "delivered")
+    return {
+        "robots": docs[0].get("robots"),
+        "sim_time_s": docs[0].get("sim_time_s"),
+        "routing_plugin": docs[0].get("routing_plugin"),
+        "packets": {"sent": sent, "broadcast_sent": broadcast, "delivered": delivered},
+        "pdr": delivered / (sent - broadcast) if sent > broadcast else 0.0,
+        "delay_s": {"mean": per_delivery("delay_s", "mean"), "p95": None},
+        "hops_mean": per_delivery("hops_mean"),
+        "mac": {"tx_frames": total("mac", "tx_frames")},
+        "routing": {"control_packets": total("routing", "control_packets")},
+        "cpu_s": {"network": total("cpu_s", "network")},
+    }
+
+
+def _get(doc, keys):
+    for key in keys:
+        doc = doc.get(key) if isinstance(doc, dict) else None
+    return doc
+
+
 def compare(swarmnet, ns3, pdr_points=3.0, delay_pct=15.0, min_speedup=None, control_pct=None):
     """Returns a dict with both sides' values, the differences and the failed checks."""
     row = {
@@ -100,8 +138,11 @@ RULE = "|" + "---|" * HEADER.count(" |")
 
 
 def markdown_cells(row):
+    diff = f"{row['pdr_diff_points']:+.1f}"
+    if "pdr_diff_points_range" in row:  # pooled over seeds: the per-seed range too
+        diff += " ({:+.1f} to {:+.1f})".format(*row["pdr_diff_points_range"])
     return [
-        f"{row['pdr'][0]:.3f}", f"{row['pdr'][1]:.3f}", f"{row['pdr_diff_points']:+.1f}",
+        f"{row['pdr'][0]:.3f}", f"{row['pdr'][1]:.3f}", diff,
         _ms(row["delay_mean_s"][0]), _ms(row["delay_mean_s"][1]),
         _signed(row["delay_mean_diff_pct"], "%"),
         _ms(row["delay_p95_s"][0]), _ms(row["delay_p95_s"][1]),
@@ -123,6 +164,10 @@ def text_report(row):
         f"  MAC tx frames    SwarmNet {row['mac_tx_frames'][0]}  ns-3 {row['mac_tx_frames'][1]}  "
         f"diff {_signed(row['mac_tx_diff_pct'], '%')}",
     ]
+    if "pdr_diff_points_range" in row:
+        lines[0] = f"seeds {','.join(map(str, row['seeds']))} pooled: " + lines[0]
+        lines.insert(2, "  per seed         delivery diff {:+.2f} to {:+.2f} points".format(
+            *row["pdr_diff_points_range"]))
     if any(v is not None for v in row["control_per_delivered"]):
         a, b = row["control_per_delivered"]
         lines.append(f"  control/deliv.   SwarmNet {a if a is None else round(a, 3)}  "

@@ -40,7 +40,8 @@ struct Options {
   std::string routing = "direct";
   std::string frame_trace;     // CSV of every frame put on the air (empty: none)
   std::string delivery_trace;  // CSV of every message's injection and first delivery
-  double duration_s = 0.0;  // 0: summary.json's sim_time_s
+  std::string ip_trace;        // CSV of IP forwards and drops, and of AODV control messages sent
+  double duration_s = 0.0;     // 0: summary.json's sim_time_s
   std::uint32_t seed = 1;
   // Propagation and PHY.
   double exponent = 3.0;
@@ -91,8 +92,16 @@ struct RoutingCounters {
   std::uint64_t rerr_broadcast = 0;
 };
 
+// IP packets dropped (Ipv4L3Protocol Drop), by kind (data: a replayed message; rreq, rrep, rerr,
+// rrep_ack: AODV; other: ICMP and the rest), then by reason. ns-3's AODV drops a packet it cannot
+// forward as no_route, one that waited in its request queue in vain as route_error; a data packet
+// dropped as ttl_expired went round a loop, and so did an AODV message unless it was a TTL-1
+// message (RERR, RREP-ACK) sent to a neighbour whose route leads through another node.
+using IpDrops = std::map<std::string, std::map<std::string, std::uint64_t>>;
+
 MacCounters g_mac;
 RoutingCounters g_routing;
+IpDrops g_ip_drops;
 constexpr std::uint16_t kAodvPort = 654;
 constexpr const char* kSubnetMask = "255.255.0.0";
 
@@ -105,6 +114,90 @@ struct FrameTrace {
   std::size_t payload_offset = 0;  // bytes of the routing header before the message index
 };
 FrameTrace g_frame_trace;
+
+// The IP trace (--ip-trace): every forward and drop of a replayed message, and every AODV control
+// message sent, so that a message's path and the route discoveries around it can be followed.
+struct IpTrace {
+  std::ofstream out;
+  std::map<ns3::Ipv4Address, std::uint32_t> node_of;  // IPv4 address -> node id
+  const std::vector<sv::TrafficMessage>* messages = nullptr;
+  std::size_t payload_offset = 0;  // bytes of the routing header before the message index
+
+  [[nodiscard]] std::int64_t node(ns3::Ipv4Address address) const {
+    const auto it = node_of.find(address);
+    return it == node_of.end() ? std::int64_t{-1} : std::int64_t{it->second};
+  }
+};
+IpTrace g_ip_trace;
+
+// The message id carried by an IP payload (a UDP datagram of the replay), or -1.
+std::int64_t datagram_message_id(ns3::Ptr<const ns3::Packet> payload) {
+  ns3::Ptr<ns3::Packet> copy = payload->Copy();
+  ns3::UdpHeader udp;
+  if (copy->RemoveHeader(udp) == 0 || udp.GetDestinationPort() == kAodvPort) return -1;
+  std::vector<std::uint8_t> head(g_ip_trace.payload_offset + sv::kMessageIndexBytes);
+  const std::uint32_t copied = copy->CopyData(head.data(), static_cast<std::uint32_t>(head.size()));
+  if (copied < head.size()) return -1;
+  const std::vector<sv::TrafficMessage>& messages = *g_ip_trace.messages;
+  const auto index = sv::payload_index(head.data() + g_ip_trace.payload_offset,
+                                       sv::kMessageIndexBytes, messages.size());
+  return index ? static_cast<std::int64_t>(messages[*index].message_id) : -1;
+}
+
+// What an IP payload is: "data" (a replayed message; *message_id is set), an AODV message type,
+// or "other".
+std::string payload_kind(const ns3::Ipv4Header& header, ns3::Ptr<const ns3::Packet> payload,
+                         std::int64_t* message_id) {
+  *message_id = -1;
+  if (header.GetProtocol() != ns3::UdpL4Protocol::PROT_NUMBER) return "other";
+  *message_id = datagram_message_id(payload);
+  if (*message_id >= 0) return "data";
+  ns3::Ptr<ns3::Packet> copy = payload->Copy();
+  ns3::UdpHeader udp;
+  copy->RemoveHeader(udp);
+  ns3::aodv::TypeHeader type;
+  if (udp.GetDestinationPort() != kAodvPort || copy->RemoveHeader(type) == 0 || !type.IsValid()) {
+    return "other";
+  }
+  switch (type.Get()) {
+    case ns3::aodv::AODVTYPE_RREQ:
+      return "rreq";
+    case ns3::aodv::AODVTYPE_RREP:
+      return "rrep";
+    case ns3::aodv::AODVTYPE_RERR:
+      return "rerr";
+    case ns3::aodv::AODVTYPE_RREP_ACK:
+      return "rrep_ack";
+  }
+  return "other";
+}
+
+void write_ip_event(std::uint32_t node, const char* event, std::int64_t message_id,
+                    const ns3::Ipv4Header& ip, const std::string& detail) {
+  g_ip_trace.out << ns3::Simulator::Now().GetNanoSeconds() << ',' << node << ',' << event << ','
+                 << message_id << ',' << static_cast<int>(ip.GetTtl()) << ','
+                 << g_ip_trace.node(ip.GetDestination()) << ',' << detail << '\n';
+}
+
+std::string drop_reason_name(ns3::Ipv4L3Protocol::DropReason reason) {
+  switch (reason) {
+    case ns3::Ipv4L3Protocol::DROP_TTL_EXPIRED:
+      return "ttl_expired";
+    case ns3::Ipv4L3Protocol::DROP_NO_ROUTE:
+      return "no_route";
+    case ns3::Ipv4L3Protocol::DROP_BAD_CHECKSUM:
+      return "bad_checksum";
+    case ns3::Ipv4L3Protocol::DROP_INTERFACE_DOWN:
+      return "interface_down";
+    case ns3::Ipv4L3Protocol::DROP_ROUTE_ERROR:
+      return "route_error";
+    case ns3::Ipv4L3Protocol::DROP_FRAGMENT_TIMEOUT:
+      return "fragment_timeout";
+    case ns3::Ipv4L3Protocol::DROP_DUPLICATE:
+      return "duplicate";
+  }
+  return "other";
+}
 
 // The message index carried by a data frame's UDP payload, or -1 (not a replayed message).
 std::int64_t frame_message_index(ns3::Ptr<const ns3::Packet> packet) {
@@ -119,6 +212,7 @@ std::int64_t frame_message_index(ns3::Ptr<const ns3::Packet> packet) {
   copy->RemoveHeader(ip);
   if (ip.GetProtocol() != ns3::UdpL4Protocol::PROT_NUMBER) return -1;
   copy->RemoveHeader(udp);
+  if (udp.GetDestinationPort() == kAodvPort) return -1;  // AODV's own messages carry no index
   std::vector<std::uint8_t> head(g_frame_trace.payload_offset + sv::kMessageIndexBytes);
   const std::uint32_t copied = copy->CopyData(head.data(), static_cast<std::uint32_t>(head.size()));
   if (copied < head.size()) return -1;
@@ -208,7 +302,7 @@ void on_dropped_mpdu(ns3::WifiMacDropReason reason, ns3::Ptr<const ns3::WifiMpdu
 }
 
 // Every IP packet sent on a wireless interface: AODV control packets are counted by type.
-void on_ip_tx(ns3::Ptr<const ns3::Packet> packet, ns3::Ptr<ns3::Ipv4> /*ipv4*/,
+void on_ip_tx(ns3::Ptr<const ns3::Packet> packet, ns3::Ptr<ns3::Ipv4> ipv4,
               std::uint32_t interface) {
   if (interface == 0) return;  // loopback
   ns3::Ptr<ns3::Packet> copy = packet->Copy();
@@ -222,6 +316,14 @@ void on_ip_tx(ns3::Ptr<const ns3::Packet> packet, ns3::Ptr<ns3::Ipv4> /*ipv4*/,
   copy->RemoveHeader(type);
   if (!type.IsValid()) return;
   g_routing.control_bytes += packet->GetSize();
+  const bool traced = g_ip_trace.out.is_open();
+  const std::uint32_t node = traced ? ipv4->GetObject<ns3::Node>()->GetId() : 0;
+  std::ostringstream detail;
+  // A unicast AODV message goes to a neighbour through IP, along AODV's own route to it: where
+  // that route leads through another node, that node relays the datagram as IP.
+  if (traced && g_ip_trace.node(ip.GetSource()) != node) {
+    detail << "ip relay of " << g_ip_trace.node(ip.GetSource()) << ": ";
+  }
   switch (type.Get()) {
     case ns3::aodv::AODVTYPE_RREQ: {
       ++g_routing.rreq;
@@ -230,6 +332,14 @@ void on_ip_tx(ns3::Ptr<const ns3::Packet> packet, ns3::Ptr<ns3::Ipv4> /*ipv4*/,
       if (rreq.GetHopCount() == 0 && rreq.GetOrigin() == ip.GetSource()) {
         ++g_routing.rreq_originated;
         ++g_routing.rreq_originated_by_ttl[ip.GetTtl()];
+      }
+      if (traced) {
+        detail << "origin " << g_ip_trace.node(rreq.GetOrigin()) << " seq " << rreq.GetOriginSeqno()
+               << " id " << rreq.GetId() << " dst " << g_ip_trace.node(rreq.GetDst()) << " dst_seq "
+               << (rreq.GetUnknownSeqno() ? std::string("unknown")
+                                          : std::to_string(rreq.GetDstSeqno()))
+               << " hops " << static_cast<int>(rreq.GetHopCount());
+        write_ip_event(node, "rreq", -1, ip, detail.str());
       }
       break;
     }
@@ -241,10 +351,14 @@ void on_ip_tx(ns3::Ptr<const ns3::Packet> packet, ns3::Ptr<ns3::Ipv4> /*ipv4*/,
       const ns3::Ipv4Address to = ip.GetDestination();
       const bool broadcast =
           to.IsBroadcast() || to.IsSubnetDirectedBroadcast(ns3::Ipv4Mask(kSubnetMask));
-      if (broadcast && rrep.GetDst() == ip.GetSource() && rrep.GetHopCount() == 0) {
-        ++g_routing.hello;
-      } else {
-        ++g_routing.rrep;
+      const bool hello = broadcast && rrep.GetDst() == ip.GetSource() && rrep.GetHopCount() == 0;
+      ++(hello ? g_routing.hello : g_routing.rrep);
+      if (traced) {
+        detail << "dst " << g_ip_trace.node(rrep.GetDst()) << " dst_seq " << rrep.GetDstSeqno()
+               << " origin " << g_ip_trace.node(rrep.GetOrigin()) << " hops "
+               << static_cast<int>(rrep.GetHopCount()) << " lifetime_ms "
+               << rrep.GetLifeTime().GetMilliSeconds();
+        write_ip_event(node, hello ? "hello" : "rrep", -1, ip, detail.str());
       }
       break;
     }
@@ -253,6 +367,16 @@ void on_ip_tx(ns3::Ptr<const ns3::Packet> packet, ns3::Ptr<ns3::Ipv4> /*ipv4*/,
       const ns3::Ipv4Address to = ip.GetDestination();
       if (to.IsBroadcast() || to.IsSubnetDirectedBroadcast(ns3::Ipv4Mask(kSubnetMask))) {
         ++g_routing.rerr_broadcast;
+      }
+      if (traced) {
+        ns3::aodv::RerrHeader rerr;
+        copy->RemoveHeader(rerr);
+        std::pair<ns3::Ipv4Address, std::uint32_t> unreachable;
+        for (const char* separator = ""; rerr.RemoveUnDestination(unreachable); separator = "; ") {
+          detail << separator << "dst " << g_ip_trace.node(unreachable.first) << " seq "
+                 << unreachable.second;
+        }
+        write_ip_event(node, "rerr", -1, ip, detail.str());
       }
       break;
     }
@@ -265,6 +389,27 @@ void on_ip_tx(ns3::Ptr<const ns3::Packet> packet, ns3::Ptr<ns3::Ipv4> /*ipv4*/,
 void on_unicast_forward(const ns3::Ipv4Header& /*header*/, ns3::Ptr<const ns3::Packet> /*p*/,
                         std::uint32_t /*interface*/) {
   ++g_routing.data_forwards;
+}
+
+void on_unicast_forward_traced(std::uint32_t node, const ns3::Ipv4Header& header,
+                               ns3::Ptr<const ns3::Packet> payload, std::uint32_t /*interface*/) {
+  const std::int64_t message_id = datagram_message_id(payload);
+  if (message_id >= 0) write_ip_event(node, "forward", message_id, header, "");
+}
+
+// IP drops by kind and reason; with --ip-trace, every drop too ("drop" for a replayed message,
+// "drop_<kind>" for anything else).
+void on_ip_drop(const ns3::Ipv4Header& header, ns3::Ptr<const ns3::Packet> payload,
+                ns3::Ipv4L3Protocol::DropReason reason, ns3::Ptr<ns3::Ipv4> ipv4,
+                std::uint32_t /*interface*/) {
+  const std::string name = drop_reason_name(reason);
+  std::int64_t message_id = -1;
+  const std::string kind = payload_kind(header, payload, &message_id);
+  ++g_ip_drops[kind][name];
+  if (g_ip_trace.out.is_open()) {
+    const std::string event = kind == "data" ? "drop" : "drop_" + kind;
+    write_ip_event(ipv4->GetObject<ns3::Node>()->GetId(), event.c_str(), message_id, header, name);
+  }
 }
 
 double process_cpu_seconds() {
@@ -445,6 +590,20 @@ nlohmann::ordered_json run(const Options& options) {
                                      ns3::MakeCallback(&on_ip_tx));
   ns3::Config::ConnectWithoutContext("/NodeList/*/$ns3::Ipv4L3Protocol/UnicastForward",
                                      ns3::MakeCallback(&on_unicast_forward));
+  g_ip_trace.messages = &messages;
+  if (options.routing == "flooding") g_ip_trace.payload_offset = sv::FloodingEndpoint::kHeaderBytes;
+  ns3::Config::ConnectWithoutContext("/NodeList/*/$ns3::Ipv4L3Protocol/Drop",
+                                     ns3::MakeCallback(&on_ip_drop));
+  if (!options.ip_trace.empty()) {
+    g_ip_trace.out.open(options.ip_trace);
+    if (!g_ip_trace.out) throw std::runtime_error(options.ip_trace + ": cannot write");
+    g_ip_trace.out << "time_ns,node,event,message_id,ip_ttl,ip_destination,detail\n";
+    for (std::uint32_t i = 0; i < node_count; ++i) {
+      g_ip_trace.node_of[interfaces.GetAddress(i)] = i;
+      nodes.Get(i)->GetObject<ns3::Ipv4L3Protocol>()->TraceConnectWithoutContext(
+          "UnicastForward", ns3::MakeBoundCallback(&on_unicast_forward_traced, i));
+    }
+  }
 
   if (!options.frame_trace.empty()) {
     g_frame_trace.out.open(options.frame_trace);
@@ -471,6 +630,7 @@ nlohmann::ordered_json run(const Options& options) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   ns3::Simulator::Destroy();
   if (g_frame_trace.out.is_open()) g_frame_trace.out.close();
+  if (g_ip_trace.out.is_open()) g_ip_trace.out.close();
   if (!options.delivery_trace.empty()) {
     std::ofstream deliveries(options.delivery_trace);
     metrics.write_deliveries(deliveries);
@@ -496,6 +656,7 @@ nlohmann::ordered_json run(const Options& options) {
                 {"tx_drops", g_mac.tx_drops},
                 {"rx_drops", g_mac.rx_drops},
                 {"dropped_unicast_mpdus", g_mac.dropped_mpdus}};
+  out["ip_drops"] = g_ip_drops;
   if (options.routing == "aodv") {
     nlohmann::ordered_json by_ttl = nlohmann::ordered_json::object();
     for (const auto& [ttl, count] : g_routing.rreq_originated_by_ttl) {
@@ -565,6 +726,10 @@ int main(int argc, char** argv) {
   app.add_option("--delivery-trace", options.delivery_trace,
                  "CSV file of every message: message_id,source,destination,inject_ns,"
                  "delivered_ns (-1: not delivered)");
+  app.add_option("--ip-trace", options.ip_trace,
+                 "CSV file of every IP forward and drop of a message and every AODV control "
+                 "message sent: time_ns,node,event,message_id,ip_ttl,ip_destination,detail "
+                 "(ip_destination -1: broadcast)");
   app.add_option("--duration-s", options.duration_s,
                  "simulated seconds (default: summary.json's sim_time_s)");
   app.add_option("--seed", options.seed, "ns-3 run number (RngRun)")->capture_default_str();

@@ -4,12 +4,16 @@ loads from light to saturated, one row at a time (never two simulators at once),
 time of both network halves measured on every row.
 
     python3 tests/validation/run_grid.py --build build [--full] [--duration-s 20]
-        [--routing flooding,direct,aodv] [--out build/validation-grid] [--doc docs/validation.md]
+        [--routing flooding,direct,aodv] [--seed 1 | --seeds 1-8] [--set KEY=VALUE ...]
+        [--out build/validation-grid] [--doc docs/validation.md]
 
 Writes OUT/results.json and OUT/table.md, and with --doc replaces the table between the
 '<!-- validation-grid:begin -->' and '<!-- validation-grid:end -->' lines of the doc. Exits 1 if
 a row misses a target (delivery ratio within 3 points, mean delay within 15%, SwarmNet at least
 10x faster on rows of 100 nodes or more; AODV control packets per delivered packet within 20%).
+With --seeds every row runs once per seed and is judged on the aggregate over the seeds
+(compare.pool: sums of messages, deliveries, control packets, frames and CPU seconds; the table's
+delivery difference also gives the per-seed range).
 """
 import argparse
 import itertools
@@ -58,12 +62,18 @@ def main():
     parser.add_argument("--routing", default="flooding,direct,aodv",
                         help="comma-separated protocols (aodv is skipped if SwarmNet lacks it)")
     parser.add_argument("--duration-s", type=float, default=20.0, help="simulated seconds per row")
-    parser.add_argument("--seed", type=int, default=1)
+    seeds = parser.add_mutually_exclusive_group()
+    seeds.add_argument("--seed", type=int, default=1)
+    seeds.add_argument("--seeds", type=seed_list, help="seeds to pool, e.g. 1-8 or 1,2,5")
+    parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                        help="a further SwarmNet override for every row, e.g. "
+                             "network.routing.params.increment_seqno_on_break=false")
     parser.add_argument("--max-robots", type=int, default=100000, help="skip larger rows")
     parser.add_argument("--stack", choices=["auto", "80211", "disk"], default="auto")
     parser.add_argument("--from-results", metavar="RESULTS_JSON",
                         help="run nothing: rewrite the table (and --doc) from an earlier run")
     args = parser.parse_args()
+    args.seeds = args.seeds or [args.seed]
     if args.from_results:
         with open(args.from_results, encoding="utf-8") as f:
             earlier = json.load(f)
@@ -108,14 +118,14 @@ def main():
               f"{rate:g} msg/s per sender", flush=True)
         overrides = [f"robots.count={robots}", f"arena.width_m={side}", f"arena.height_m={side}",
                      f"robots.controllers.1.params.rate_hz={rate:g}",
-                     f"duration_s={args.duration_s:g}"]
+                     f"duration_s={args.duration_s:g}"] + args.set
         tolerances = {"pdr_points": 3.0, "delay_pct": 15.0,
                       "min_speedup": 10.0 if robots >= 100 else None,
                       "control_pct": 20.0 if routing == "aodv" else None}
         started = time.monotonic()
         try:
-            row = vr.run_case(swarmnet, ns3, scenario, os.path.join(out, name), routing, stack,
-                              overrides, args.seed, tolerances, log=lambda s: None)
+            row = run_row(swarmnet, ns3, scenario, os.path.join(out, name), routing, stack,
+                          overrides, args.seeds, tolerances)
         except RuntimeError as error:
             print(f"  failed: {error}", flush=True)
             row = {"robots": robots, "routing": routing, "error": str(error), "pass": False}
@@ -126,7 +136,7 @@ def main():
         results.append(row)
 
     os.makedirs(out, exist_ok=True)
-    meta = {"stack": stack, "duration_s": args.duration_s, "seed": args.seed,
+    meta = {"stack": stack, "duration_s": args.duration_s, "seeds": args.seeds, "set": args.set,
             "machine": platform.machine(), "cpus": os.cpu_count(),
             "date": time.strftime("%Y-%m-%d")}
     with open(os.path.join(out, "results.json"), "w", encoding="utf-8") as f:
@@ -140,11 +150,52 @@ def main():
     return 0 if all(r["pass"] for r in results) else 1
 
 
+def seed_list(text):
+    """'1-8', '1,2,5' or '1-3,7' -> [1, 2, ...]."""
+    seeds = []
+    for part in text.split(","):
+        first, _, last = part.partition("-")
+        seeds += range(int(first), int(last or first) + 1)
+    if not seeds:
+        raise argparse.ArgumentTypeError(f"no seed in {text!r}")
+    return seeds
+
+
+def run_row(swarmnet, ns3, scenario, work_dir, routing, stack, overrides, seeds, tolerances):
+    """One row: compare.compare()'s row for one seed; for several, the row of the pooled runs,
+    with the range of the per-seed delivery differences and every seed's own row."""
+    pairs = []
+    for seed in seeds:
+        seed_dir = work_dir if len(seeds) == 1 else os.path.join(work_dir, f"seed{seed}")
+        pairs.append(vr.run_pair(swarmnet, ns3, scenario, seed_dir, routing, stack, overrides,
+                                 seed, log=lambda s: None))
+    if len(pairs) == 1:
+        return vr.compared(*pairs[0], routing, stack, tolerances)
+    per_seed = [dict(vr.compared(*pair, routing, stack, tolerances), seed=seed)
+                for seed, pair in zip(seeds, pairs)]
+    row = vr.compared(compare.pool([p[0] for p in pairs]), compare.pool([p[1] for p in pairs]),
+                      routing, stack, tolerances)
+    diffs = [r["pdr_diff_points"] for r in per_seed]
+    row.update(seeds=seeds, pdr_diff_points_range=[min(diffs), max(diffs)], per_seed=per_seed)
+    return row
+
+
+def describe_seeds(seeds):
+    if len(seeds) == 1:
+        return f"seed {seeds[0]}"
+    span = (f"{seeds[0]}-{seeds[-1]}" if seeds == list(range(seeds[0], seeds[-1] + 1))
+            else ",".join(map(str, seeds)))
+    return (f"seeds {span} pooled (delivery difference: pooled, then the per-seed range; "
+            f"p95 is not pooled)")
+
+
 def markdown_table(results, meta):
     stack = ("SwarmNet: log_distance + sinr PHY + dcf80211" if meta["stack"] == "80211" else
              "SwarmNet: 120 m disk + ideal_mac (its 802.11 stack was not available)")
+    settings = "".join(f"`--set {o}`, " for o in meta.get("set", []))
     lines = [f"{stack}; ns-3.37: YansWifi 802.11a 6 Mbit/s, log-distance; "
-             f"{meta['duration_s']:g} simulated s per row, seed {meta['seed']}, "
+             f"{meta['duration_s']:g} simulated s per row, "
+             f"{describe_seeds(meta.get('seeds') or [meta['seed']])}, {settings}"
              f"{meta['cpus']} CPUs, {meta['date']}. CPU: network half only, seconds.", "",
              HEADER, "|" + "---|" * COLUMNS]
     for row in results:

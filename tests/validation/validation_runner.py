@@ -68,7 +68,21 @@ def swarmnet_overrides(stack, routing):
 def run_case(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), seed=1,
              tolerances=None, log=print):
     """Runs both simulators and compares them; returns compare.compare()'s row."""
-    tolerances = tolerances or {}
+    summary, replay = run_pair(swarmnet, ns3, scenario, work_dir, routing, stack, overrides, seed,
+                               log)
+    return compared(summary, replay, routing, stack, tolerances)
+
+
+def compared(summary, replay, routing, stack, tolerances=None):
+    """compare.compare()'s row for SwarmNet's summary and ns-3's replay JSON (or pools of them)."""
+    row = compare.compare(summary, replay, **(tolerances or {}))
+    row["routing"] = routing
+    row["stack"] = stack
+    return row
+
+
+def run_pair(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), seed=1, log=print):
+    """Runs SwarmNet, then ns-3 on its traces; returns (summary.json, the replay's JSON)."""
     run_dir = os.path.join(work_dir, "swarmnet")
     ns3_json = os.path.join(work_dir, "ns3.json")
     os.makedirs(work_dir, exist_ok=True)
@@ -87,10 +101,7 @@ def run_case(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), se
         summary = json.load(f)
     with open(ns3_json, encoding="utf-8") as f:
         replay = json.load(f)
-    row = compare.compare(summary, replay, **tolerances)
-    row["routing"] = routing
-    row["stack"] = stack
-    return row
+    return summary, replay
 
 
 def _run(command, output_path, log):

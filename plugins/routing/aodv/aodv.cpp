@@ -64,8 +64,8 @@ PluginInfo Aodv::info() {
       "one) maintain neighbours, as do RREQs heard and data forwarded or delivered (ns-3: "
       "forwarding keeps both neighbours alive); allowed_hello_loss missed HELLOs or, with "
       "link_layer_feedback, a MAC's link_failed() report breaks the link: routes through it are "
-      "invalidated with their "
-      "sequence number incremented, and a RERR goes to the precursors (unicast to a single one, "
+      "invalidated with their sequence number incremented (unless increment_seqno_on_break is "
+      "false, ns-3.37's rule), and a RERR goes to the precursors (unicast to a single one, "
       "broadcast otherwise), which do the same. RREQs and RERRs are rate-limited per second; "
       "broadcast control packets wait a random jitter of a whole number of milliseconds up to "
       "broadcast_jitter_max_s drawn from the node's stream (the first HELLO likewise, up to "
@@ -89,14 +89,14 @@ PluginInfo Aodv::info() {
       "Departures from ns-3, all from RFC 3561: every route update follows section 6.2 (ns-3 "
       "overwrites reverse routes unconditionally); a destination sets its sequence number to "
       "the maximum of its own and the RREQ's (6.6.1); link breaks increment the sequence numbers "
-      "they report (6.11), and so do expiring routes.",
+      "they report (6.11), and so do expiring routes (increment_seqno_on_break).",
       parameter_schema()};
 }
 
 Aodv::Aodv(const PluginArgs& args)
     : params_(parameters_from(args.params)),
       random_(args.seed),
-      table_(params_.delete_period),
+      table_(params_.delete_period, params_.increment_seqno_on_break),
       queue_(params_.max_queue_len, params_.max_queue_time,
              [this](const Packet& packet, DropReason reason) { context_->drop(packet, reason); }),
       rreq_ids_(params_.path_discovery_time),
@@ -601,8 +601,11 @@ void Aodv::receive_error(const Rerr& rerr, NodeId from) {
   for (const UnreachableDestination& d : rerr.destinations) {
     RouteEntry* route = table_.find_valid(d.destination, t);
     if (route == nullptr || route->next_hop != from) continue;
-    if (seq_newer(d.seq, route->seq) || !route->valid_seq) route->seq = d.seq;
-    route->valid_seq = true;
+    // ns-3.37 (RecvError) ignores the numbers a RERR carries.
+    if (params_.increment_seqno_on_break && (seq_newer(d.seq, route->seq) || !route->valid_seq)) {
+      route->seq = d.seq;
+      route->valid_seq = true;
+    }
     table_.invalidate(*route, t);
     merge(precursors, route->precursors);
     relay.destinations.push_back({d.destination, route->seq});
@@ -765,8 +768,10 @@ void Aodv::link_broken(NodeId neighbor, const Packet* failed) {
       buffer(*failed);
       continue;
     }
-    route->seq += 1;  // RFC 3561 6.11
-    route->valid_seq = true;
+    if (params_.increment_seqno_on_break) {  // RFC 3561 6.11; ns-3.37 keeps the number
+      route->seq += 1;
+      route->valid_seq = true;
+    }
     table_.invalidate(*route, t);
     merge(precursors, route->precursors);
     rerr.destinations.push_back({d.destination, route->seq});

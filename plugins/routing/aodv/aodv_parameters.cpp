@@ -82,6 +82,11 @@ std::vector<ParamSpec> parameter_schema() {
       bool_param("enable_hello", true, "send HELLO messages and detect broken links by their loss"),
       bool_param("link_layer_feedback", true,
                  "take the MAC's report of an unacknowledged frame (link_failed) as a broken link"),
+      bool_param("increment_seqno_on_break", true,
+                 "a route that breaks or expires has its destination sequence number incremented "
+                 "(RFC 3561 6.11), and a RERR's newer number is adopted; false: ns-3.37's rule, "
+                 "the number stays as it was, so that any node with an equally fresh route may "
+                 "answer the next RREQ"),
       bool_param("enable_broadcast", true,
                  "rebroadcast application broadcasts (with duplicate detection and data_ttl)"),
       bool_param("enable_local_repair", false,
@@ -132,6 +137,7 @@ AodvParameters parameters_from(const ParamSet& params) {
   p.gratuitous_reply = params.boolean("gratuitous_reply");
   p.enable_hello = params.boolean("enable_hello");
   p.link_layer_feedback = params.boolean("link_layer_feedback");
+  p.increment_seqno_on_break = params.boolean("increment_seqno_on_break");
   p.enable_broadcast = params.boolean("enable_broadcast");
   p.enable_local_repair = params.boolean("enable_local_repair");
   p.local_add_ttl = count_param(params, "local_add_ttl");

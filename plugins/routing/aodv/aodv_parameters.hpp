@@ -35,6 +35,7 @@ struct AodvParameters {
   bool gratuitous_reply = true;
   bool enable_hello = true;
   bool link_layer_feedback = true;
+  bool increment_seqno_on_break = true;
   bool enable_broadcast = true;
   bool enable_local_repair = false;
   std::uint32_t local_add_ttl = 2;

@@ -34,7 +34,7 @@ bool RoutingTable::age(RouteEntry& entry, SimTime now) const {
       invalidate(entry, now);
       // As for a broken link: a node that let its route expire must not take back the same
       // sequence number from a longer path that may lead through nodes still routing via it.
-      if (entry.valid_seq) ++entry.seq;
+      if (entry.valid_seq && increment_seq_on_expiry_) ++entry.seq;
       return true;
     case RouteState::invalid:
       return false;

@@ -8,7 +8,8 @@
 // the route discovery that owns it. An expiring route's sequence number is incremented, as
 // RFC 3561 section 6.11 does for a broken link: otherwise rule (iii) of section 6.2 (same
 // number, route inactive) lets the node accept a longer route with the same number through
-// upstream nodes that still route via it, a loop the random-mobility tests found.
+// upstream nodes that still route via it, a loop the random-mobility tests found. A table made
+// with `increment_seq_on_expiry` false keeps the number, as ns-3.37 does.
 #pragma once
 
 #include <cstddef>
@@ -45,7 +46,8 @@ struct RouteEntry {
 
 class RoutingTable {
  public:
-  explicit RoutingTable(SimTime delete_period) : delete_period_(delete_period) {}
+  explicit RoutingTable(SimTime delete_period, bool increment_seq_on_expiry = true)
+      : delete_period_(delete_period), increment_seq_on_expiry_(increment_seq_on_expiry) {}
 
   // The entry for `destination` after expiry at `now`, or null.
   RouteEntry* find(NodeId destination, SimTime now);
@@ -82,6 +84,7 @@ class RoutingTable {
   bool age(RouteEntry& entry, SimTime now) const;
 
   SimTime delete_period_;
+  bool increment_seq_on_expiry_;
   std::map<NodeId, RouteEntry> entries_;  // ordered: iteration order is deterministic
   std::map<NodeId, SimTime> blacklist_;
 };
