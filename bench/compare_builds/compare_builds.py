@@ -8,8 +8,9 @@
 Runs every workload with both builds, alternating (before, after, before, ...) so that load on a
 shared machine hits both alike, and reports the median network CPU seconds per simulated second
 (`cpu_s.network` of summary.json), the events run, and after/before. It also checks that both
-builds wrote the same delivery ratio and MAC frame count: a speed-up that changes results is
-reported as such. Writes a JSON file with every run when --out is given.
+builds reported the same packets, delivery ratio, delays, hops, MAC and routing counters: a
+speed-up that changes results is reported as such (compare packet traces with `cmp` for byte
+identity). Writes a JSON file with every run when --out is given.
 """
 import argparse
 import json
@@ -41,6 +42,9 @@ WORKLOADS = {
 }
 
 
+RESULT_KEYS = ("packets", "pdr", "delay_s", "hops_mean", "mac", "routing")
+
+
 def run_once(build, scenario, sets, sim_s, out_dir):
     command = [os.path.join(build, "bin", "swarmnet"), "run", scenario, "--transport", "inproc",
                "--set", f"duration_s={sim_s}", "--out", out_dir]
@@ -52,8 +56,11 @@ def run_once(build, scenario, sets, sim_s, out_dir):
         raise RuntimeError(f"{' '.join(command)} failed ({done.returncode}): {done.stderr.strip()}")
     with open(os.path.join(out_dir, "summary.json"), encoding="utf-8") as f:
         summary = json.load(f)
+    # Everything the run reports about the network, for the same-results check.
+    outcome = {key: summary.get(key) for key in RESULT_KEYS}
     return {"cpu_network_s": summary["cpu_s"]["network"], "events": summary.get("events"),
-            "pdr": summary["pdr"], "mac_tx_frames": summary["mac"]["tx_frames"]}
+            "pdr": summary["pdr"], "mac_tx_frames": summary["mac"]["tx_frames"],
+            "outcome": outcome}
 
 
 def main():
@@ -87,14 +94,13 @@ def main():
                           f"{runs[label][-1]['cpu_network_s']:.3f} CPU-s", file=sys.stderr)
             medians = {label: statistics.median(r["cpu_network_s"] for r in runs[label]) / args.sim_s
                        for label in runs}
-            same = all(runs["before"][0][key] == runs["after"][0][key]
-                       for key in ("pdr", "mac_tx_frames"))
+            same = runs["before"][0]["outcome"] == runs["after"][0]["outcome"]
             results[name] = {"runs": runs, "cpu_per_sim_s": medians,
                              "after_over_before": medians["after"] / medians["before"],
                              "same_results": same}
 
     print(f"| workload | before (CPU-s per sim-s) | after | after/before | events before | "
-          f"events after | same PDR and MAC frames |")
+          f"events after | same results |")
     print("|---|---|---|---|---|---|---|")
     for name, result in results.items():
         medians = result["cpu_per_sim_s"]

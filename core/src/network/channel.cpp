@@ -44,6 +44,7 @@ Channel::Channel(const Scenario& scenario, PropagationChain chain, Scheduler& sc
 
 void Channel::attach(NodeId node, Phy& phy) {
   phys_.at(node) = &phy;
+  step_links_.assign(phys_.size(), nullptr);  // they hold PHY pointers
   if (has_quiet_signals_) phy.set_quiet_signal_source(this, node);
 }
 
@@ -232,7 +233,8 @@ void Channel::schedule_next_end(std::uint32_t index) {
           const Link& link = links[f.next_end++];
           link.phy->signal_end(f.frame, link.power_dbm);
           if (f.next_end == links.size()) {
-            // Recycled only now: the receivers' callbacks above read the frame.
+            // Recycled only now: the receivers' callbacks above read the frame. (`links` dangles
+            // once reset; nothing reads it after.)
             f.links.reset();
             free_fanouts_.push_back(index);
             return;

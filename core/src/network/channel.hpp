@@ -1,11 +1,12 @@
 // The wireless channel: fans a transmission out to the nodes that can hear it.
 //
-// For each candidate receiver (ascending node id, the transmitter excluded) it computes the
-// received power through the propagation chain, starting at the PHY's tx power plus the transmit
-// antenna gain, then adds the receive antenna gain, and, if the
-// receiving PHY finds the signal audible, schedules the signal's start at now + distance / c and
-// its end one frame duration later. The transmitter's PHY ends its transmission at now + duration.
-// Powers and delays are fixed when the frame is sent (positions are constant within a step).
+// For each candidate receiver (the transmitter excluded) it computes the received power through
+// the propagation chain, starting at the PHY's tx power plus the transmit antenna gain, then adds
+// the receive antenna gain, and, if the receiving PHY finds the signal audible, hands it the
+// signal's start at now + distance / c and its end one frame duration later, in arrival order
+// (receivers at equal distance by ascending id). The transmitter's PHY ends its transmission at
+// now + duration. Powers and delays are fixed when the frame is sent (positions are constant
+// within a step), or at the transmitter's first frame of the step when links are reused (below).
 //
 // Quiet signals (sinr model, network/phy.hpp): receivers whose signal is below the PHY's event
 // threshold get no events. The grid neighbourhood is searched only to the event cutoff (where
@@ -147,7 +148,8 @@ class Channel final : public QuietSignalSource {
   Rect grid_bounds_;
   bool grid_ready_ = false;
   std::vector<NodeId> candidates_;  // scratch, reused by every transmission
-  // Per transmitter, its links in the current step (cache_links_ only; emptied when nodes move).
+  // Per transmitter, its links in the current step (cache_links_ only; emptied by set_positions
+  // and attach).
   std::vector<std::shared_ptr<const Links>> step_links_;
   // Fan-outs are recycled (by index, so growth does not move a live one's address in use).
   std::vector<std::unique_ptr<FrameFanout>> fanouts_;

@@ -93,6 +93,10 @@ bool Phy::medium_busy() const {
   for (const Arrival& a : arrivals_) {
     if (!a.in_window) sensed_mw += a.rx_power_mw;
   }
+  return senses_busy(sensed_mw);
+}
+
+bool Phy::senses_busy(double sensed_mw) const {
   return sensed_mw > 0.0 && (sensed_mw >= cca_threshold_mw_ || sensed_mw >= energy_detection_mw_);
 }
 
@@ -191,9 +195,9 @@ void Phy::arm_window_if_needed(bool strong_candidate) {
   bool matters = strong_candidate;
   if (!matters && !reported_busy_) {
     // Would sensing every arriving signal (as medium_busy() does once the window has ended)
-    // make the medium busy? If already busy, more signals keep it so.
-    const double total = total_mw();
-    matters = total > 0.0 && (total >= cca_threshold_mw_ || total >= energy_detection_mw_);
+    // make the medium busy? If already busy, more signals keep it so. This test is what lets a
+    // passed window close lazily: while it stays unarmed, sensing its signals changes nothing.
+    matters = senses_busy(total_mw());
   }
   if (!matters) return;
   detection_timer_ = scheduler_->schedule_reserved(window_end_, window_sequence_, [this] {
@@ -245,7 +249,9 @@ void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_p
     arm_window_if_needed(rx_power_dbm >= cca_threshold_dbm_);
   }
   // No carrier-sense change is possible here: locked or transmitting, the medium is busy anyway,
-  // and otherwise the new signal is in the detection window, not sensed yet.
+  // and otherwise the new signal is in the detection window, not sensed yet. (A passed window
+  // closed above starts sensing its signals, but it was left unarmed only because that changes
+  // nothing: arm_window_if_needed runs at every change of arrivals_ while a window is open.)
 }
 
 void Phy::end_detection_window() {
@@ -313,7 +319,8 @@ void Phy::signal_end(const Frame& frame, double rx_power_dbm) {
   }
   if (lock_) note_interference_change();
   // A signal's end lowers the sensed power: an idle medium stays idle (a float sum of positive
-  // terms never grows when one is dropped).
+  // terms never grows when one is dropped; a passed window closed above changed nothing, see
+  // signal_start).
   if (reported_busy_) report_busy_change();
   arm_window_if_needed(false);
 }

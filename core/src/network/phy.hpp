@@ -166,6 +166,9 @@ class Phy {
 
   [[nodiscard]] bool sinr_model() const { return sinr_; }
   [[nodiscard]] double total_mw() const;
+  // Carrier sense's verdict on this much sensed power (medium_busy() without the lock and the
+  // transmission).
+  [[nodiscard]] bool senses_busy(double sensed_mw) const;
   void report_busy_change();
   void open_window();
   // Arms the open window's timer if its end would detect a frame (`strong_candidate`: one that
@@ -185,8 +188,9 @@ class Phy {
   [[nodiscard]] double success_probability(const Lock& lock, const Frame& frame, SimTime end,
                                            bool with_interference) const;
 
-  // Hot state first: the channel touches a PHY per receiver per frame, and signal_start and
-  // signal_end read only these first cache lines (the configuration is copied after them).
+  // Hot state first: the channel touches a PHY per receiver per frame, and for a signal that is
+  // not received (most of them) signal_start and signal_end read only these first cache lines;
+  // the configuration and the reception-only state come after them.
   PhyListener& listener_;
   Scheduler* scheduler_;
   bool sinr_;  // config_.model == PhyModel::sinr
