@@ -440,6 +440,40 @@ TEST(AodvProtocol, ControlMessageToANeighbourWithoutARouteWaitsForADiscovery) {
   EXPECT_TRUE(gratuitous_heard);
 }
 
+// ns-3.37 (RecvAodv) makes the sender of every AODV message a one-hop route before it looks at
+// the message, so a duplicate RREQ, dropped unread, still turns a longer route to its sender
+// into a direct one; the neighbour table learns nothing from it.
+TEST(AodvProtocol, ADuplicateRreqMakesItsSenderADirectRouteAsInNs3) {
+  TestNetwork net(line(4), aodv_params({{"enable_hello", false}}), false);
+  Rrep to_three;  // node 1 learns node 3 through node 2
+  to_three.destination = 3;
+  to_three.destination_seq = 5;
+  to_three.originator = 0;
+  to_three.hop_count = 1;
+  to_three.lifetime_ms = 10000;
+  net.inject(1, to_three, 2);
+  ASSERT_NE(net.valid_route(1, 3), nullptr);
+  ASSERT_EQ(net.valid_route(1, 3)->hop_count, 2U);
+
+  Rreq rreq;  // a flood from node 0, heard first from node 0, then relayed by node 3
+  rreq.originator = 0;
+  rreq.originator_seq = 1;
+  rreq.id = 1;
+  rreq.destination = 9;
+  rreq.unknown_seq = true;
+  rreq.ttl = 5;
+  net.inject(1, rreq, 0);
+  rreq.hop_count = 2;
+  net.inject(1, rreq, 3);
+  const RouteEntry* to_three_now = net.valid_route(1, 3);
+  ASSERT_NE(to_three_now, nullptr);
+  EXPECT_EQ(to_three_now->next_hop, 3U);
+  EXPECT_EQ(to_three_now->hop_count, 1U);
+  EXPECT_EQ(to_three_now->seq, 5U);  // kept (loop freedom: see update_route_to_neighbor)
+  EXPECT_FALSE(net.aodv(1).neighbors().is_neighbor(3, net.now()));
+  EXPECT_EQ(net.valid_route(1, 0)->next_hop, 0U);  // the duplicate changed no reverse route
+}
+
 // ns-3.37 draws its first HELLO in whole milliseconds up to 100 ms and every broadcast jitter in
 // whole milliseconds up to 10 ms (UniformRandomVariable::GetInteger), so HELLOs leave on whole
 // milliseconds.

@@ -62,7 +62,9 @@ PluginInfo Aodv::info() {
       "equal and fewer hops) replaces older, never the reverse. HELLOs (a RREP about oneself, "
       "every hello_interval_s, TTL 1; only a RREQ sent or relayed in the interval stands in for "
       "one) maintain neighbours, as do RREQs heard and data forwarded or delivered (ns-3: "
-      "forwarding keeps both neighbours alive); allowed_hello_loss missed HELLOs or, with "
+      "forwarding keeps both neighbours alive), while every AODV message heard, a duplicate RREQ "
+      "included, makes its sender a one-hop route (ns-3's RecvAodv); allowed_hello_loss missed "
+      "HELLOs or, with "
       "link_layer_feedback, a MAC's link_failed() report breaks the link: routes through it are "
       "invalidated with their sequence number incremented (unless increment_seqno_on_break is "
       "false, ns-3.37's rule), and a RERR goes to the precursors (unicast to a single one, "
@@ -156,16 +158,18 @@ void Aodv::receive(Packet packet, NodeId from) {
     context_->count("malformed");
     return;
   }
+  // ns-3.37 (RecvAodv) makes the sender a one-hop route on every AODV message it hears, before
+  // looking at it: duplicate RREQs and copies of our own RREQs too. In a flood a node thus learns
+  // a direct route to every neighbour that relays it, not only to the first (the neighbour table
+  // is not touched: only HELLOs, new RREQs and traffic feed it).
+  update_route_to_neighbor(from);
   if (auto* rreq = std::get_if<Rreq>(&*message)) {
     receive_request(*rreq, from);
   } else if (auto* rrep = std::get_if<Rrep>(&*message)) {
-    update_route_to_neighbor(from);
     receive_reply(*rrep, from);
   } else if (auto* rerr = std::get_if<Rerr>(&*message)) {
-    update_route_to_neighbor(from);
     receive_error(*rerr, from);
   } else {
-    update_route_to_neighbor(from);
     receive_ack(from);
   }
 }
@@ -443,7 +447,6 @@ void Aodv::receive_request(const Rreq& received, NodeId from) {
   if (received.originator == self_ || rreq_ids_.is_duplicate(received.originator, received.id, t)) {
     return;
   }
-  update_route_to_neighbor(from);
   neighbors_.update(from, params_.hello_lifetime(), t);
   Rreq rreq = received;
   const std::uint32_t hops = std::uint32_t{rreq.hop_count} + 1;
