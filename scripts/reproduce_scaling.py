@@ -87,13 +87,6 @@ def figure(means, out):
              mfc="none", label="study: ns-2 (Table I)")
     cpu.plot(sn, [STUDY_NS3[k][0] / STUDY_DURATION_S for k in sn], "s--", color="tab:olive",
              mfc="none", label="study: ARGoS (Table II)")
-    cpu.set_xscale("log")
-    cpu.set_yscale("log")
-    cpu.set_xlabel("robots (constant density)")
-    cpu.set_ylabel("CPU seconds per simulated second")
-    cpu.set_title("CPU time of each half")
-    cpu.grid(True, which="both", alpha=0.3)
-    cpu.legend(fontsize=8)
 
     rtf.plot(n, [means[k]["realtime_factor"] for k in n], "o-", color="tab:blue",
              label="SwarmNet (simulated s / wall s)")
@@ -103,13 +96,6 @@ def figure(means, out):
     rtf.plot(sn, [STUDY_DURATION_S / sum(STUDY_NS2[k]) for k in sn], "d--", color="tab:orange",
              mfc="none", label="study ARGoS/ns-2: 200 s / CPU sum")
     rtf.axhline(1.0, color="black", linestyle=":", linewidth=1, label="real time")
-    rtf.set_xscale("log")
-    rtf.set_yscale("log")
-    rtf.set_xlabel("robots (constant density)")
-    rtf.set_ylabel("real-time factor")
-    rtf.set_title("Speed against real time")
-    rtf.grid(True, which="both", alpha=0.3)
-    rtf.legend(fontsize=8)
     # Sizes simulated for a shorter time than most are marked with their duration.
     durations = [means[k]["duration_s"] for k in n]
     usual = max(set(durations), key=durations.count)
@@ -119,11 +105,18 @@ def figure(means, out):
                          xytext=(4, 6), fontsize=7)
     rtf.text(0.02, 0.02, f"{usual:g} simulated s unless marked", transform=rtf.transAxes,
              fontsize=7)
-    for axis in (cpu, rtf):
+    for axis, ylabel, title in ((cpu, "CPU seconds per simulated second", "CPU time of each half"),
+                                (rtf, "real-time factor", "Speed against real time")):
+        axis.set_xscale("log")
+        axis.set_yscale("log")
+        axis.set_xlabel("robots (constant density)")
+        axis.set_ylabel(ylabel)
+        axis.set_title(title)
         axis.set_xticks(n)
         axis.set_xticklabels([str(k) for k in n], rotation=60, fontsize=7)
         axis.minorticks_off()
         axis.grid(True, which="major", alpha=0.3)
+        axis.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(out, dpi=120)
 

@@ -36,6 +36,31 @@ std::size_t drops_with(const TestNetwork& net, DropReason reason) {
       [reason](const test::TestDrop& d) { return !d.control && d.reason == reason; }));
 }
 
+// Node 0's first RREQ (its sequence number 1, id 1) for `destination`, whose number it does not
+// know, with IP TTL `ttl`: the start of a flood to inject at a node by hand.
+Rreq first_request_of_node_0(NodeId destination, std::uint8_t ttl) {
+  Rreq rreq;
+  rreq.originator = 0;
+  rreq.originator_seq = 1;
+  rreq.id = 1;
+  rreq.destination = destination;
+  rreq.unknown_seq = true;
+  rreq.ttl = ttl;
+  return rreq;
+}
+
+// A RREP towards node 0 about node 3 (sequence number 5), one hop from its sender, valid 10 s:
+// injected at node 1 from node 2, it gives node 1 a two-hop route to node 3 through node 2.
+Rrep reply_about_node_3() {
+  Rrep rrep;
+  rrep.destination = 3;
+  rrep.destination_seq = 5;
+  rrep.originator = 0;
+  rrep.hop_count = 1;
+  rrep.lifetime_ms = 10000;
+  return rrep;
+}
+
 TEST(AodvProtocol, ExpandingRingFindsADestinationFourHopsAwayAtTtlFive) {
   TestNetwork net(line(5), aodv_params({{"enable_hello", false}}), true);
   net.send(0, 4, 1);
@@ -387,14 +412,7 @@ TEST(AodvProtocol, NeitherAMissingRrepAckNorAnUndeliveredRrepBlacklists) {
   TestNetwork unacknowledged(line(3), aodv_params(), false);
   unacknowledged.block(0, 1);        // node 0's RREP-ACK never reaches node 1
   unacknowledged.run_until(s(1.5));  // node 1 knows node 2 from its HELLOs
-  Rreq rreq;
-  rreq.originator = 0;
-  rreq.originator_seq = 1;
-  rreq.id = 1;
-  rreq.destination = 2;
-  rreq.unknown_seq = true;
-  rreq.ttl = 3;
-  unacknowledged.inject(1, rreq, 0);
+  unacknowledged.inject(1, first_request_of_node_0(2, 3), 0);
   unacknowledged.run_for(s(0.5));
   EXPECT_EQ(unacknowledged.count(1, "control_rrep"), 1U);  // answered for its neighbour, A set
   EXPECT_EQ(unacknowledged.count(0, "control_rrep_ack"), 1U);
@@ -406,25 +424,15 @@ TEST(AodvProtocol, NeitherAMissingRrepAckNorAnUndeliveredRrepBlacklists) {
 // that neighbour again.
 TEST(AodvProtocol, ControlMessageToANeighbourWithoutARouteWaitsForADiscovery) {
   TestNetwork net(line(4), aodv_params({{"enable_hello", false}}), false);
-  Rrep to_three;  // node 1 learns node 3 through node 2, for 10 s
-  to_three.destination = 3;
-  to_three.destination_seq = 5;
-  to_three.originator = 0;
-  to_three.hop_count = 1;
-  to_three.lifetime_ms = 10000;
-  net.inject(1, to_three, 2);
+  net.inject(1, reply_about_node_3(), 2);  // node 1 learns node 3 through node 2, for 10 s
   net.run_until(s(3.5));  // its route to node 2 itself (active_route_timeout) has expired
   ASSERT_NE(net.valid_route(1, 3), nullptr);
   ASSERT_EQ(net.valid_route(1, 2), nullptr);
 
-  Rreq rreq;
-  rreq.originator = 0;
-  rreq.originator_seq = 1;
-  rreq.id = 1;
-  rreq.destination = 3;
+  Rreq rreq = first_request_of_node_0(3, 5);
+  rreq.unknown_seq = false;
   rreq.destination_seq = 5;
   rreq.gratuitous = true;
-  rreq.ttl = 5;
   net.inject(1, rreq, 0);
   EXPECT_TRUE(net.aodv(1).discovering(2));
   EXPECT_EQ(net.count(1, "route_discoveries"), 1U);
@@ -445,23 +453,12 @@ TEST(AodvProtocol, ControlMessageToANeighbourWithoutARouteWaitsForADiscovery) {
 // into a direct one; the neighbour table learns nothing from it.
 TEST(AodvProtocol, ADuplicateRreqMakesItsSenderADirectRouteAsInNs3) {
   TestNetwork net(line(4), aodv_params({{"enable_hello", false}}), false);
-  Rrep to_three;  // node 1 learns node 3 through node 2
-  to_three.destination = 3;
-  to_three.destination_seq = 5;
-  to_three.originator = 0;
-  to_three.hop_count = 1;
-  to_three.lifetime_ms = 10000;
-  net.inject(1, to_three, 2);
+  net.inject(1, reply_about_node_3(), 2);  // node 1 learns node 3 through node 2
   ASSERT_NE(net.valid_route(1, 3), nullptr);
   ASSERT_EQ(net.valid_route(1, 3)->hop_count, 2U);
 
-  Rreq rreq;  // a flood from node 0, heard first from node 0, then relayed by node 3
-  rreq.originator = 0;
-  rreq.originator_seq = 1;
-  rreq.id = 1;
-  rreq.destination = 9;
-  rreq.unknown_seq = true;
-  rreq.ttl = 5;
+  // A flood from node 0, heard first from node 0, then relayed by node 3.
+  Rreq rreq = first_request_of_node_0(9, 5);
   net.inject(1, rreq, 0);
   rreq.hop_count = 2;
   net.inject(1, rreq, 3);

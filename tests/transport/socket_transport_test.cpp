@@ -10,23 +10,13 @@
 #include <thread>
 #include <vector>
 
-#include "swarmnet/random.hpp"
+#include "transport_test_support.hpp"
 
 namespace swarmnet {
 namespace {
 
-std::vector<std::byte> pattern(std::size_t size, std::uint64_t seed) {
-  std::vector<std::byte> bytes(size);
-  RandomStream random(seed);
-  for (auto& b : bytes) b = static_cast<std::byte>(random.next());
-  return bytes;
-}
-
-WaitPolicy quick_policy() {
-  WaitPolicy policy;
-  policy.timeout = std::chrono::seconds(20);
-  return policy;
-}
+using test::pattern;
+using test::quick_policy;
 
 struct SocketPair {
   SocketPair() {
