@@ -172,19 +172,34 @@ TEST(WirelessPropagation, ModelsSayWhetherTheyVaryPerFrame) {
   // The channel reuses a transmitter's links within a step only when no model in the chain
   // varies per frame; each model's answer must match what its rx_power_dbm does.
   PluginLoader loader;
+  // What rx_power_dbm does: one link at 10 m, twenty frames; do their powers differ?
+  const auto draws_per_frame = [](const PluginInstance<Propagation>& model) {
+    const double first = model->rx_power_dbm(0.0, link_at(10.0, 1));
+    for (std::uint64_t uid = 2; uid <= 20; ++uid) {
+      if (model->rx_power_dbm(0.0, link_at(10.0, uid)) != first) return true;
+    }
+    return false;
+  };
   for (const char* name : {"log_distance", "friis", "two_ray_ground", "range"}) {
     const auto model = make_model(loader, name);
     EXPECT_FALSE(model->varies_per_frame()) << name;
+    EXPECT_FALSE(draws_per_frame(model)) << name;
+  }
+  for (const char* name : {"nakagami", "shadowing"}) {
+    EXPECT_TRUE(draws_per_frame(make_model(loader, name))) << name;
   }
   EXPECT_TRUE(make_model(loader, "nakagami")->varies_per_frame());
   EXPECT_TRUE(make_model(loader, "shadowing")->varies_per_frame());
   PluginChoice per_link = choose(loader, "shadowing", PluginKind::propagation);
   set_param(per_link, "per_frame", false);
   EXPECT_FALSE(make_model(loader, per_link)->varies_per_frame());
+  EXPECT_FALSE(draws_per_frame(make_model(loader, per_link)));
   EXPECT_FALSE(make_model(loader, "disk")->varies_per_frame());  // probability 1
+  EXPECT_FALSE(draws_per_frame(make_model(loader, "disk")));
   PluginChoice lossy = choose(loader, "disk", PluginKind::propagation);
   set_param(lossy, "probability", 0.5);
   EXPECT_TRUE(make_model(loader, lossy)->varies_per_frame());
+  EXPECT_TRUE(draws_per_frame(make_model(loader, lossy)));
 
   Scenario scenario = test::make_scenario(loader, 2);
   scenario.network.propagation = {choose(loader, "log_distance", PluginKind::propagation)};

@@ -38,13 +38,11 @@ Channel::Channel(const Scenario& scenario, PropagationChain chain, Scheduler& sc
       positions_(node_count, Vec2::Zero()),
       arena_bounds_{0.0, 0.0, scenario.arena.width_m, scenario.arena.height_m},
       step_links_(node_count) {
-  candidates_.reserve(node_count);
   rebuild_grid();
 }
 
 void Channel::attach(NodeId node, Phy& phy) {
   phys_.at(node) = &phy;
-  step_links_.assign(phys_.size(), nullptr);  // they hold PHY pointers
   if (has_quiet_signals_) phy.set_quiet_signal_source(this, node);
 }
 
@@ -94,58 +92,65 @@ void Channel::transmit(NodeId transmitter, Frame frame, SimTime duration) {
   scheduler_.schedule_in(duration, [&tx_phy] { tx_phy.end_transmission(); });
   if (has_quiet_signals_) remember_on_air(frame, duration);
 
-  std::shared_ptr<const Links> links = cache_links_ ? step_links_[transmitter] : nullptr;
-  if (!links) {
-    links = compute_links(transmitter, uid);
-    if (cache_links_) step_links_[transmitter] = links;
-  }
-  if (links->empty()) return;
-
   const std::uint32_t index = acquire_fanout();
   FrameFanout& fanout = *fanouts_[index];
+  if (cache_links_) {
+    std::shared_ptr<const Links>& cached = step_links_[transmitter];
+    if (!cached) {
+      auto links = std::make_shared<Links>();
+      compute_links(transmitter, uid, *links);
+      cached = std::move(links);
+    }
+    fanout.step_links = cached;
+    fanout.links = cached.get();
+  } else {
+    compute_links(transmitter, uid, fanout.own_links);
+    fanout.links = &fanout.own_links;
+  }
+  if (fanout.links->empty()) {
+    release_fanout(index);
+    return;
+  }
   // Sequence numbers as if each receiver's start and end had been scheduled now, in arrival
   // order; both streams run in that order.
-  fanout.first_sequence = scheduler_.reserve_sequences(2 * links->size());
-  fanout.links = std::move(links);
+  fanout.first_sequence = scheduler_.reserve_sequences(2 * fanout.links->size());
   fanout.frame = std::move(frame);
   fanout.sent = scheduler_.now();
   fanout.duration = duration;
   fanout.next_start = 0;
   fanout.next_end = 0;
-  schedule_next_start(index);
-  schedule_next_end(index);
+  schedule_next<false>(index);
+  schedule_next<true>(index);
 }
 
-std::shared_ptr<const Channel::Links> Channel::compute_links(NodeId transmitter,
-                                                             std::uint64_t uid) {
+double Channel::link_power_dbm(const RadioLink& link) const {
+  return chain_.rx_power_dbm(tx_power_dbm_, link) + rx_gain_db_;
+}
+
+void Channel::compute_links(NodeId transmitter, std::uint64_t uid, Links& links) const {
+  links.clear();
   const Vec2 tx_position = positions_[transmitter];
-  candidates_.clear();
-  auto links = std::make_shared<Links>();
-  if (use_grid_) {
-    if (event_cutoff_m_ <= 0.0) return links;
-    // In cell order: the links are sorted below, so candidates need no order of their own.
-    grid_.for_each_candidate(tx_position, event_cutoff_m_,
-                             [this](std::uint32_t node) { candidates_.push_back(node); });
-  } else {
-    for (NodeId node = 0; node < positions_.size(); ++node) candidates_.push_back(node);
-  }
-  links->reserve(candidates_.size());
-  for (const NodeId receiver : candidates_) {
-    if (receiver == transmitter) continue;
+  const auto visit = [&](NodeId receiver) {
+    if (receiver == transmitter) return;
     const Vec2& rx_position = positions_[receiver];
     const double distance_m = (rx_position - tx_position).norm();
-    if (use_grid_ && distance_m >= event_cutoff_m_) continue;
-    const RadioLink link{transmitter, receiver, tx_position, rx_position, distance_m, uid};
-    const double power_dbm = chain_.rx_power_dbm(tx_power_dbm_, link) + rx_gain_db_;
-    if (power_dbm < event_dbm_) continue;  // inaudible, or quiet: see quiet_signals()
-    links->push_back(Link{propagation_delay(distance_m), receiver, phys_[receiver], power_dbm,
-                          dbm_to_milliwatts(power_dbm)});
+    if (use_grid_ && distance_m >= event_cutoff_m_) return;
+    const double power_dbm =
+        link_power_dbm({transmitter, receiver, tx_position, rx_position, distance_m, uid});
+    if (power_dbm < event_dbm_) return;  // inaudible, or quiet: see quiet_signals()
+    links.push_back(
+        Link{propagation_delay(distance_m), receiver, power_dbm, dbm_to_milliwatts(power_dbm)});
+  };
+  if (use_grid_) {
+    // In cell order: the links are sorted below, so the visit needs no order of its own.
+    if (event_cutoff_m_ > 0.0) grid_.for_each_candidate(tx_position, event_cutoff_m_, visit);
+  } else {
+    for (NodeId node = 0; node < positions_.size(); ++node) visit(node);
   }
   // Arrival order; receivers at the same distance by id.
-  std::sort(links->begin(), links->end(), [](const Link& a, const Link& b) {
+  std::sort(links.begin(), links.end(), [](const Link& a, const Link& b) {
     return a.delay != b.delay ? a.delay < b.delay : a.receiver < b.receiver;
   });
-  return links;
 }
 
 void Channel::remember_on_air(const Frame& frame, SimTime duration) {
@@ -182,9 +187,8 @@ void Channel::quiet_signals(NodeId receiver, SimTime from, SimTime to,
     const SimTime start = frame.sent + propagation_delay(distance_m);
     const SimTime end = start + frame.duration;
     if (start >= to || end <= from) continue;
-    const RadioLink link{frame.transmitter, receiver,   tx_position,
-                         rx_position,       distance_m, frame.uid};
-    const double power_dbm = chain_.rx_power_dbm(tx_power_dbm_, link) + rx_gain_db_;
+    const double power_dbm = link_power_dbm(
+        {frame.transmitter, receiver, tx_position, rx_position, distance_m, frame.uid});
     if (power_dbm < audibility_dbm_ || power_dbm >= event_dbm_) continue;
     out.push_back(QuietSignal{start, end, dbm_to_milliwatts(power_dbm)});
   }
@@ -200,51 +204,38 @@ std::uint32_t Channel::acquire_fanout() {
   return static_cast<std::uint32_t>(fanouts_.size() - 1);
 }
 
-void Channel::schedule_next_start(std::uint32_t index) {
-  FrameFanout& fanout = *fanouts_[index];
-  const std::size_t i = fanout.next_start;
-  scheduler_.schedule_reserved(
-      fanout.sent + (*fanout.links)[i].delay, fanout.first_sequence + 2 * i, [this, index] {
-        // Starts that are due next are run here, without a round trip through the heap.
-        FrameFanout& f = *fanouts_[index];
-        const Links& links = *f.links;
-        while (true) {
-          const Link& link = links[f.next_start++];
-          link.phy->signal_start(f.frame.uid, link.power_dbm, link.power_mw);
-          if (f.next_start == links.size()) return;
-          if (!scheduler_.advance_if_next(f.sent + links[f.next_start].delay,
-                                          f.first_sequence + 2 * f.next_start)) {
-            break;
-          }
-        }
-        schedule_next_start(index);
-      });
+void Channel::release_fanout(std::uint32_t index) {
+  fanouts_[index]->step_links.reset();
+  free_fanouts_.push_back(index);
 }
 
-void Channel::schedule_next_end(std::uint32_t index) {
-  FrameFanout& fanout = *fanouts_[index];
-  const std::size_t i = fanout.next_end;
+template <bool kEnds>
+void Channel::schedule_next(std::uint32_t index) {
+  const FrameFanout& fanout = *fanouts_[index];
+  const std::size_t i = kEnds ? fanout.next_end : fanout.next_start;
   scheduler_.schedule_reserved(
-      fanout.sent + (*fanout.links)[i].delay + fanout.duration, fanout.first_sequence + 2 * i + 1,
-      [this, index] {
+      fanout.step_time<kEnds>(i), fanout.step_sequence<kEnds>(i), [this, index] {
+        // Steps that are due next are run here, without a round trip through the heap.
         FrameFanout& f = *fanouts_[index];
-        const Links& links = *f.links;
+        std::size_t& next = kEnds ? f.next_end : f.next_start;
         while (true) {
-          const Link& link = links[f.next_end++];
-          link.phy->signal_end(f.frame, link.power_dbm);
-          if (f.next_end == links.size()) {
-            // Recycled only now: the receivers' callbacks above read the frame. (`links` dangles
-            // once reset; nothing reads it after.)
-            f.links.reset();
-            free_fanouts_.push_back(index);
+          const Link& link = (*f.links)[next++];
+          Phy& phy = *phys_[link.receiver];
+          if constexpr (kEnds) {
+            phy.signal_end(f.frame, link.power_dbm);
+          } else {
+            phy.signal_start(f.frame.uid, link.power_dbm, link.power_mw);
+          }
+          if (next == f.links->size()) {
+            // Recycled only after the last end: the receivers' callbacks read the frame.
+            if constexpr (kEnds) release_fanout(index);
             return;
           }
-          if (!scheduler_.advance_if_next(f.sent + links[f.next_end].delay + f.duration,
-                                          f.first_sequence + 2 * f.next_end + 1)) {
+          if (!scheduler_.advance_if_next(f.step_time<kEnds>(next), f.step_sequence<kEnds>(next))) {
             break;
           }
         }
-        schedule_next_end(index);
+        schedule_next<kEnds>(index);
       });
 }
 

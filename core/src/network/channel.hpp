@@ -2,8 +2,9 @@
 //
 // For each candidate receiver (the transmitter excluded) it computes the received power through
 // the propagation chain, starting at the PHY's tx power plus the transmit antenna gain, then adds
-// the receive antenna gain, and, if the receiving PHY finds the signal audible, hands it the
-// signal's start at now + distance / c and its end one frame duration later, in arrival order
+// the receive antenna gain, and, if the signal reaches the PHY's event threshold
+// (event_threshold_dbm), hands it the signal's start at now + distance / c and its end one frame
+// duration later, in arrival order
 // (receivers at equal distance by ascending id). The transmitter's PHY ends its transmission at
 // now + duration. Powers and delays are fixed when the frame is sent (positions are constant
 // within a step), or at the transmitter's first frame of the step when links are reused (below).
@@ -94,7 +95,6 @@ class Channel final : public QuietSignalSource {
   struct Link {
     SimTime delay;
     NodeId receiver;
-    Phy* phy;
     double power_dbm;
     double power_mw;
   };
@@ -111,20 +111,39 @@ class Channel final : public QuietSignalSource {
     Frame frame;
     SimTime sent{};
     SimTime duration{};
-    std::shared_ptr<const Links> links;
-    std::uint64_t first_sequence = 0;  // link i's signal starts with first_sequence + 2 i
+    std::shared_ptr<const Links> step_links;  // the transmitter's links of the step, if reused
+    Links own_links;                          // this frame's links otherwise (capacity kept)
+    const Links* links = nullptr;             // whichever of the two this frame uses
+    std::uint64_t first_sequence = 0;         // link i's signal starts with first_sequence + 2 i
     std::size_t next_start = 0;
     std::size_t next_end = 0;
+
+    // When and with which reserved sequence number link i's start (kEnds false) or end runs.
+    template <bool kEnds>
+    [[nodiscard]] SimTime step_time(std::size_t i) const {
+      return kEnds ? sent + (*links)[i].delay + duration : sent + (*links)[i].delay;
+    }
+    template <bool kEnds>
+    [[nodiscard]] std::uint64_t step_sequence(std::size_t i) const {
+      return first_sequence + 2 * i + (kEnds ? 1 : 0);
+    }
   };
 
   // Updates the bounds, the grid (if used) and longest_reach_ after the positions changed.
   void rebuild_grid();
   void remember_on_air(const Frame& frame, SimTime duration);
-  // The receivers that get `transmitter`'s frame `uid` as events, in arrival order.
-  [[nodiscard]] std::shared_ptr<const Links> compute_links(NodeId transmitter, std::uint64_t uid);
+  // The power a link delivers, after the receive antenna; transmit() and quiet_signals() must
+  // agree on it to the bit.
+  [[nodiscard]] double link_power_dbm(const RadioLink& link) const;
+  // Fills `links` with the receivers that get `transmitter`'s frame `uid` as events, in arrival
+  // order.
+  void compute_links(NodeId transmitter, std::uint64_t uid, Links& links) const;
   std::uint32_t acquire_fanout();
-  void schedule_next_start(std::uint32_t fanout);
-  void schedule_next_end(std::uint32_t fanout);
+  void release_fanout(std::uint32_t fanout);
+  // Schedules the next step of one stream of a frame's fan-out: its receivers' signal starts
+  // (kEnds false) or ends, in arrival order.
+  template <bool kEnds>
+  void schedule_next(std::uint32_t fanout);
 
   PropagationChain chain_;
   Scheduler& scheduler_;
@@ -147,9 +166,7 @@ class Channel final : public QuietSignalSource {
   Rect arena_bounds_;
   Rect grid_bounds_;
   bool grid_ready_ = false;
-  std::vector<NodeId> candidates_;  // scratch, reused by every transmission
-  // Per transmitter, its links in the current step (cache_links_ only; emptied by set_positions
-  // and attach).
+  // Per transmitter, its links in the current step (cache_links_ only; emptied by set_positions).
   std::vector<std::shared_ptr<const Links>> step_links_;
   // Fan-outs are recycled (by index, so growth does not move a live one's address in use).
   std::vector<std::unique_ptr<FrameFanout>> fanouts_;

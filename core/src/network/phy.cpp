@@ -62,8 +62,7 @@ Phy::Phy(const PhyConfig& config, PhyListener& listener, Scheduler* scheduler, s
       energy_detection_mw_(dbm_to_milliwatts(config.energy_detection_dbm)),
       cca_threshold_mw_(dbm_to_milliwatts(config.cca_threshold_dbm)),
       config_(config),
-      seed_(seed),
-      audible_dbm_(audibility_threshold_dbm(config)) {
+      seed_(seed) {
   if (sinr_model() && scheduler_ == nullptr) {
     throw std::logic_error("PHY: the sinr model needs a scheduler");
   }
@@ -99,8 +98,6 @@ bool Phy::medium_busy() const {
 bool Phy::senses_busy(double sensed_mw) const {
   return sensed_mw > 0.0 && (sensed_mw >= cca_threshold_mw_ || sensed_mw >= energy_detection_mw_);
 }
-
-bool Phy::audible(double rx_power_dbm) const { return rx_power_dbm >= audible_dbm_; }
 
 void Phy::set_quiet_signal_source(const QuietSignalSource* source, NodeId self) {
   quiet_source_ = source;
@@ -217,7 +214,6 @@ void Phy::close_window() {
   if (detection_timer_ != kNoTimer) scheduler_->cancel(detection_timer_);
   detection_timer_ = kNoTimer;
   window_open_ = false;
-  candidates_.clear();
   leave_window();
 }
 
@@ -243,7 +239,6 @@ void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_p
   if (lock_) {
     note_interference_change();
   } else if (!transmitting_) {
-    candidates_.push_back(frame_uid);
     arrivals_.back().in_window = true;
     if (!window_open_) open_window();
     arm_window_if_needed(rx_power_dbm >= cca_threshold_dbm_);
@@ -255,25 +250,18 @@ void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_p
 }
 
 void Phy::end_detection_window() {
+  // Armed timers only: a transmission cancels the window, and a lock begins only here.
   window_open_ = false;
-  // Swapped into a second member rather than a local: both buffers keep their capacity, so a
-  // window allocates nothing, and signals starting during detection go to a fresh candidates_.
-  window_.clear();
-  window_.swap(candidates_);
+  detect_preamble();
   leave_window();
-  if (transmitting_ || lock_) return;
-  detect_preamble(window_);
   // Detected (locked) or not, the window's signals are sensed from now on.
   report_busy_change();
 }
 
-void Phy::detect_preamble(const std::vector<std::uint64_t>& candidates) {
+void Phy::detect_preamble() {
   const Arrival* best = nullptr;
-  for (const std::uint64_t uid : candidates) {
-    const auto it = std::find_if(arrivals_.begin(), arrivals_.end(),
-                                 [uid](const Arrival& a) { return a.frame_uid == uid; });
-    if (it == arrivals_.end()) continue;
-    if (best == nullptr || it->rx_power_mw > best->rx_power_mw) best = &*it;
+  for (const Arrival& a : arrivals_) {
+    if (a.in_window && (best == nullptr || a.rx_power_mw > best->rx_power_mw)) best = &a;
   }
   if (best == nullptr || best->rx_power_dbm < cca_threshold_dbm_) return;
   const double interference = total_mw() - best->rx_power_mw;
@@ -311,8 +299,6 @@ void Phy::signal_end(const Frame& frame, double rx_power_dbm) {
     return;
   }
 
-  candidates_.erase(std::remove(candidates_.begin(), candidates_.end(), frame.uid),
-                    candidates_.end());
   if (lock_ && lock_->frame_uid == frame.uid) {
     finish_lock(frame, rx_power_dbm);
     return;

@@ -128,10 +128,6 @@ class Phy {
   [[nodiscard]] State state() const;
   [[nodiscard]] bool medium_busy() const;
 
-  // Whether a signal of this power concerns this PHY at all; the channel schedules nothing for
-  // signals that do not.
-  [[nodiscard]] bool audible(double rx_power_dbm) const;
-
   // sinr model: where to find the quiet signals reaching this PHY, which is node `self`. Without
   // a source the PHY knows only the signals handed to it.
   void set_quiet_signal_source(const QuietSignalSource* source, NodeId self);
@@ -153,9 +149,9 @@ class Phy {
     double rx_power_dbm;
     double rx_power_mw = 0.0;
     SimTime start{};
-    bool in_window = false;  // among candidates_: not carrier-sensed yet
+    bool in_window = false;  // its preamble started in the open window: not carrier-sensed yet
   };
-  void leave_window();  // every arrival's in_window cleared (candidates_ emptied or swapped)
+  void leave_window();  // every arrival's in_window cleared
   // sinr: the frame the PHY is locked on, and the interference it has seen since.
   struct Lock {
     std::uint64_t frame_uid;
@@ -178,7 +174,8 @@ class Phy {
   void close_passed_window();
   void close_window();
   void end_detection_window();
-  void detect_preamble(const std::vector<std::uint64_t>& candidates);
+  // Locks on the strongest signal of the window if it is detected.
+  void detect_preamble();
   void note_interference_change();
   void finish_lock(const Frame& frame, double rx_power_dbm);
   // Total power of the quiet signals arriving now.
@@ -207,8 +204,7 @@ class Phy {
   double noise_mw_;
   double energy_detection_mw_;
   double cca_threshold_mw_;
-  std::vector<Arrival> arrivals_;          // signals currently arriving, in arrival order
-  std::vector<std::uint64_t> candidates_;  // frames whose preamble started in the window
+  std::vector<Arrival> arrivals_;  // signals currently arriving, in arrival order
   SimTime window_end_{};
   std::uint64_t window_sequence_ = 0;
   TimerId detection_timer_ = kNoTimer;  // the armed window's timer
@@ -216,8 +212,6 @@ class Phy {
   // Colder state.
   PhyConfig config_;
   std::uint64_t seed_;
-  double audible_dbm_;
-  std::vector<std::uint64_t> window_;  // the window being judged (see end_detection_window)
   const QuietSignalSource* quiet_source_ = nullptr;
   NodeId self_ = kNoNode;
   // Scratch for quiet-signal queries and add_quiet_interference (no allocation per reception).

@@ -12,7 +12,7 @@
 // exactly where it would have. The channel hands a frame to its receivers this way, and the PHY
 // arms its preamble-detection timer only when the window's end can change anything.
 //
-// Cost (docs/performance.md): the channel schedules two events per receiver of every frame, so
+// Cost (docs/performance.md): a frame's fan-out runs an event per receiver start and end, so
 // the callback type stores captures of up to EventCallback::kInlineBytes inline (no allocation
 // per event; a std::function handed in by a plugin fits as well), and the heap is 4-ary (half the
 // depth of a binary heap, children of a node on one cache line).
