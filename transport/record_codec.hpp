@@ -36,39 +36,22 @@ class RecordWriter {
 
   template <RecordScalar T>
   RecordWriter& put(T value) {
-    if (space_.size() - position_ < sizeof(T)) return overflow();
+    if (space_.size() - position_ < sizeof(T)) return *this;  // sized by encoded_bytes: never
     std::memcpy(space_.data() + position_, &value, sizeof(T));
     position_ += sizeof(T);
     return *this;
   }
   RecordWriter& put(std::span<const std::byte> bytes) {
-    if (space_.size() - position_ < encoded_bytes(bytes)) return overflow();
+    if (space_.size() - position_ < encoded_bytes(bytes)) return *this;
     put(static_cast<std::uint32_t>(bytes.size()));
     if (!bytes.empty()) std::memcpy(space_.data() + position_, bytes.data(), bytes.size());
     position_ += bytes.size();
     return *this;
   }
-  // The next `bytes` bytes, for a caller that fills a block itself; empty when they do not fit.
-  std::span<std::byte> take(std::size_t bytes) {
-    if (space_.size() - position_ < bytes) {
-      overflow();
-      return {};
-    }
-    position_ += bytes;
-    return space_.subspan(position_ - bytes, bytes);
-  }
-  // True when the fields filled the space exactly: the size reserved matched what was written.
-  [[nodiscard]] bool complete() const { return !overflowed_ && position_ == space_.size(); }
 
  private:
-  RecordWriter& overflow() {
-    overflowed_ = true;
-    return *this;
-  }
-
   std::span<std::byte> space_;
   std::size_t position_ = 0;
-  bool overflowed_ = false;
 };
 
 class RecordReader {
@@ -83,13 +66,11 @@ class RecordReader {
     position_ += sizeof(T);
     return true;
   }
-  // A byte string as a view of the record's bytes (valid as long as the record is).
+  // A byte string as a view of the record's bytes (valid as long as the record is). On failure
+  // the read position may have moved: the caller discards the record as malformed.
   bool get_view(std::span<const std::byte>& bytes, std::uint32_t max_bytes) {
     std::uint32_t length = 0;
-    if (record_.size() - position_ < sizeof length) return false;
-    std::memcpy(&length, record_.data() + position_, sizeof length);
-    if (length > max_bytes || record_.size() - position_ - sizeof length < length) return false;
-    position_ += sizeof length;
+    if (!get(length) || length > max_bytes || remaining() < length) return false;
     bytes = record_.subspan(position_, length);
     position_ += length;
     return true;
@@ -99,13 +80,6 @@ class RecordReader {
     std::span<const std::byte> view;
     if (!get_view(view, max_bytes)) return false;
     bytes.assign(view.begin(), view.end());
-    return true;
-  }
-  // The next `count` bytes as they lie, for a caller that decodes a block itself.
-  bool take(std::size_t count, std::span<const std::byte>& block) {
-    if (record_.size() - position_ < count) return false;
-    block = record_.subspan(position_, count);
-    position_ += count;
     return true;
   }
   [[nodiscard]] bool at_end() const { return position_ == record_.size(); }

@@ -6,7 +6,6 @@
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
-#include <sched.h>
 #include <sys/socket.h>
 #include <sys/un.h>
 #include <unistd.h>
@@ -43,14 +42,7 @@ IoStatus SocketTransport::wait_for(short events) {
   // yield a few times, then sleep in poll() in slices. A peer that answers within microseconds
   // then finds this side awake and its send() wakes nobody, as with the ring.
   pollfd p{fd_, events, 0};
-  const auto spin_until = std::chrono::steady_clock::now() + policy_.spin_time;
-  do {
-    if (::poll(&p, 1, 0) > 0) return IoStatus::ok;
-  } while (std::chrono::steady_clock::now() < spin_until);
-  for (std::uint32_t i = 0; i < policy_.yield_iterations; ++i) {
-    sched_yield();
-    if (::poll(&p, 1, 0) > 0) return IoStatus::ok;
-  }
+  if (spin_then_yield(policy_, [&] { return ::poll(&p, 1, 0) > 0; })) return IoStatus::ok;
   // The clock bounds how long we wait for the peer; it never reaches a result.
   const auto deadline = std::chrono::steady_clock::now() + policy_.timeout;
   const auto slice = std::chrono::duration_cast<std::chrono::milliseconds>(policy_.sleep_slice);
@@ -77,16 +69,24 @@ IoStatus SocketTransport::reserve(std::size_t bytes, std::span<std::byte>& space
 
 IoStatus SocketTransport::commit() {
   if (!reserved_) return IoStatus::ok;
+  append_reserved();
+  return out_end_ >= kFlushThreshold ? flush() : IoStatus::ok;
+}
+
+void SocketTransport::append_reserved() {
   const auto length = static_cast<std::uint32_t>(reserved_bytes_);
   std::memcpy(out_.data() + out_end_, &length, kLengthBytes);
   out_end_ += kLengthBytes + reserved_bytes_;
   reserved_ = false;
-  return out_end_ >= kFlushThreshold ? flush() : IoStatus::ok;
 }
 
 IoStatus SocketTransport::try_send(std::span<const std::byte> record) {
-  const IoStatus status = send(record);
+  // Appended without commit()'s flush, which may wait: this one never does.
+  std::span<std::byte> space;
+  const IoStatus status = reserve(record.size(), space);
   if (status != IoStatus::ok) return status;
+  if (!record.empty()) std::memcpy(space.data(), record.data(), record.size());
+  append_reserved();
   const ssize_t n = ::send(fd_, out_.data(), out_end_, MSG_NOSIGNAL | MSG_DONTWAIT);
   if (n > 0) {
     std::memmove(out_.data(), out_.data() + n, out_end_ - static_cast<std::size_t>(n));

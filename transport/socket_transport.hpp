@@ -34,6 +34,8 @@ class SocketTransport final : public Transport {
  private:
   IoStatus wait_for(short events);
   IoStatus fill(std::size_t bytes);
+  // Puts the reserved record's length before it and counts it as waiting to be sent.
+  void append_reserved();
 
   int fd_;
   WaitPolicy policy_;

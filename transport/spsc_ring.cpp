@@ -1,7 +1,5 @@
 #include "spsc_ring.hpp"
 
-#include <sched.h>
-
 #include <chrono>
 #include <cstring>
 #include <new>
@@ -16,8 +14,6 @@ namespace swarmnet {
 namespace {
 
 bool is_power_of_two(std::uint64_t x) { return x != 0 && (x & (x - 1)) == 0; }
-
-inline void cpu_relax() { __builtin_ia32_pause(); }
 
 }  // namespace
 
@@ -131,11 +127,14 @@ void SpscRing::publish() {
 IoStatus SpscRing::try_write(std::span<const std::byte> record) {
   std::span<std::byte> space;
   const IoStatus status = try_reserve(record.size(), space);
-  if (status != IoStatus::ok) return status;
+  if (status == IoStatus::ok) commit_copy(space, record);
+  return status;
+}
+
+void SpscRing::commit_copy(std::span<std::byte> space, std::span<const std::byte> record) {
   // An empty record's data() may be null, which memcpy must not get.
   if (!record.empty()) std::memcpy(space.data(), record.data(), record.size());
   commit();
-  return IoStatus::ok;
 }
 
 IoStatus SpscRing::try_push(std::span<const std::byte> record) {
@@ -233,22 +232,13 @@ namespace {
 template <typename Attempt>
 IoStatus wait_for(Attempt&& attempt, std::atomic<std::uint32_t>& event,
                   std::atomic<std::uint32_t>& sleeping, const WaitPolicy& policy, bool heavy) {
-  IoStatus status = attempt();
-  if (status != IoStatus::would_block) return status;
-  // The clock bounds how long we spin and wait; it never reaches a result.
-  const auto spin_until = std::chrono::steady_clock::now() + policy.spin_time;
-  for (std::uint32_t i = 1; status == IoStatus::would_block; ++i) {
-    cpu_relax();
+  IoStatus status = IoStatus::would_block;
+  const auto done = [&] {
     status = attempt();
-    if (i % 32 == 0 && std::chrono::steady_clock::now() >= spin_until) break;
-  }
-  // On a machine with fewer free cores than runnable threads, spinning only delays the peer we
-  // wait for: give the core away a few times before sleeping.
-  for (std::uint32_t i = 0; status == IoStatus::would_block && i < policy.yield_iterations; ++i) {
-    sched_yield();
-    status = attempt();
-  }
-  if (status != IoStatus::would_block) return status;
+    return status != IoStatus::would_block;
+  };
+  if (spin_then_yield(policy, done)) return status;
+  // The clock bounds how long we wait; it never reaches a result.
   const auto deadline = std::chrono::steady_clock::now() + policy.timeout;
   for (;;) {
     const std::uint32_t seen = event.load(std::memory_order_acquire);
@@ -286,10 +276,8 @@ IoStatus SpscRing::reserve(std::size_t bytes, std::span<std::byte>& space,
 IoStatus SpscRing::write(std::span<const std::byte> record, const WaitPolicy& policy) {
   std::span<std::byte> space;
   const IoStatus status = reserve(record.size(), space, policy);
-  if (status != IoStatus::ok) return status;
-  if (!record.empty()) std::memcpy(space.data(), record.data(), record.size());
-  commit();
-  return IoStatus::ok;
+  if (status == IoStatus::ok) commit_copy(space, record);
+  return status;
 }
 
 IoStatus SpscRing::push(std::span<const std::byte> record, const WaitPolicy& policy) {
@@ -304,12 +292,8 @@ IoStatus SpscRing::read(std::span<const std::byte>& record, const WaitPolicy& po
 }
 
 IoStatus SpscRing::pop(std::vector<std::byte>& record, const WaitPolicy& policy) {
-  std::span<const std::byte> view;
-  const IoStatus status = read(view, policy);
-  if (status != IoStatus::ok) return status;
-  record.assign(view.begin(), view.end());
-  release();
-  return IoStatus::ok;
+  return wait_for([&] { return try_pop(record); }, header_->data_event, header_->consumer_sleeping,
+                  policy, asymmetric_fences_);
 }
 
 void SpscRing::close_producer() {

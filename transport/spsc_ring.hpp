@@ -137,6 +137,8 @@ class SpscRing {
   void consume(std::uint64_t bytes);
   void announce_consumer();
   void publish_tail();
+  // Copies `record` into reserved `space` and commits it.
+  void commit_copy(std::span<std::byte> space, std::span<const std::byte> record);
   void wake_consumer();
   void wake_producer();
 

@@ -1,7 +1,6 @@
 #include "step_channel.hpp"
 
 #include <algorithm>
-#include <cstring>
 
 namespace swarmnet {
 
@@ -69,21 +68,17 @@ ProtocolResult StepChannel::send_record(const char* what, bool last_of_batch,
 ProtocolResult StepChannel::send_positions(const StepBatch& batch, std::uint32_t first,
                                            std::uint32_t count) {
   const RecordType type = RecordType::positions;
-  const std::size_t block_bytes = std::size_t{count} * kPositionBytes;
   std::span<std::byte> space;
-  IoStatus status = transport_.reserve(
-      encoded_bytes(type) + encoded_bytes(first) + encoded_bytes(count) + block_bytes, space);
+  IoStatus status =
+      transport_.reserve(encoded_bytes(type) + encoded_bytes(first) + encoded_bytes(count) +
+                             std::size_t{count} * kPositionBytes,
+                         space);
   if (status == IoStatus::ok) {
     RecordWriter writer(space);
     writer.put(type).put(first).put(count);
-    const std::span<std::byte> block = writer.take(block_bytes);
-    if (!writer.complete()) {
-      return {IoStatus::corrupt, "internal error: a positions record does not fill its space"};
-    }
     for (std::uint32_t i = 0; i < count; ++i) {
       const Vec2& p = batch.positions[first + i];
-      const double xy[2] = {p.x(), p.y()};
-      std::memcpy(block.data() + i * kPositionBytes, xy, kPositionBytes);
+      writer.put(p.x()).put(p.y());
     }
     status = transport_.commit();
   }
@@ -243,16 +238,16 @@ ProtocolResult StepChannel::receive_batch(StepBatch& batch, bool& finished) {
     if (type != RecordType::positions) return unexpected(type, "positions");
     std::uint32_t first = 0;
     std::uint32_t count = 0;
-    std::span<const std::byte> block;
     if (!reader->get(first) || !reader->get(count) || first != filled || count > robots - first ||
-        reader->remaining() != std::size_t{count} * kPositionBytes ||
-        !reader->take(std::size_t{count} * kPositionBytes, block)) {
+        reader->remaining() != std::size_t{count} * kPositionBytes) {
       return malformed(type);
     }
     for (std::uint32_t i = 0; i < count; ++i) {
-      double xy[2];
-      std::memcpy(xy, block.data() + i * kPositionBytes, kPositionBytes);
-      batch.positions[first + i] = Vec2(xy[0], xy[1]);
+      double x = 0.0;
+      double y = 0.0;
+      (void)reader->get(x);  // the length check above guarantees both
+      (void)reader->get(y);
+      batch.positions[first + i] = Vec2(x, y);
     }
     filled += count;
   }

@@ -3,6 +3,8 @@
 // then sleep on a futex or in poll() so that an idle half uses no CPU.
 #pragma once
 
+#include <sched.h>
+
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -21,5 +23,31 @@ struct WaitPolicy {
   // Called between sleep slices; returns false when the peer is known to be gone.
   std::function<bool()> peer_alive;
 };
+
+// A hint to the CPU that this thread is spinning (eases the sibling hyperthread).
+inline void cpu_relax() { __builtin_ia32_pause(); }
+
+// The first two stages of a wait under `policy`, shared by the ring and the socket transports:
+// polls `ready` (true once the wait is over) for the spin time, then yields the core
+// yield_iterations times, polling after each. Returns whether `ready` answered true; if not, the
+// caller sleeps in its own way (a futex, poll()). The clock only bounds the spinning.
+template <typename Ready>
+bool spin_then_yield(const WaitPolicy& policy, Ready&& ready) {
+  if (ready()) return true;
+  const auto spin_until = std::chrono::steady_clock::now() + policy.spin_time;
+  for (std::uint32_t i = 1;; ++i) {
+    cpu_relax();
+    if (ready()) return true;
+    // The clock is read every 32 polls: a pause lasts only 10 to 140 cycles.
+    if (i % 32 == 0 && std::chrono::steady_clock::now() >= spin_until) break;
+  }
+  // On a machine with fewer free cores than runnable threads, spinning only delays the peer we
+  // wait for: give the core away a few times before sleeping.
+  for (std::uint32_t i = 0; i < policy.yield_iterations; ++i) {
+    sched_yield();
+    if (ready()) return true;
+  }
+  return false;
+}
 
 }  // namespace swarmnet
