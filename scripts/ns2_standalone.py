@@ -69,10 +69,11 @@ def arena(resolved):
 
 def write_script(run, out):
     width, height = arena(run / "scenario.resolved.yaml")
-    messages = list(csv.DictReader(open(run / "traffic.csv", newline="")))
-    robots = int(re.search(r"count:\s*(\d+)", (run / "scenario.resolved.yaml").read_text()).group(1))
-    duration = float(re.search(r"^duration_s:\s*([0-9.eE+-]+)", (run / "scenario.resolved.yaml")
-                               .read_text(), re.M).group(1))
+    with open(run / "traffic.csv", newline="") as f:
+        messages = list(csv.DictReader(f))
+    summary = json.loads((run / "summary.json").read_text())
+    robots = int(summary["robots"])
+    duration = float(summary["sim_time_s"])
     lines = [HEADER.format(run=run, width=math.ceil(width) + 1, height=math.ceil(height) + 1,
                            robots=robots, mobility=(run / "mobility.ns2").resolve())]
     flows = {}

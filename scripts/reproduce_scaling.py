@@ -22,12 +22,12 @@ import subprocess
 import sys
 from collections import defaultdict
 
+from reproduce_overhead import TABLE_I_NS2, TABLE_II_NS3
+
 # The study's CPU seconds for 200 simulated seconds, integrated runs: (robot simulator, network
-# simulator). Table II: ARGoS with ns-3; Table I: ARGoS with ns-2.
-STUDY_NS3 = {25: (9.0, 2.9), 50: (17.6, 15.2), 75: (24.8, 34.9), 100: (30.8, 52.8),
-             125: (37.0, 106.7), 150: (42.2, 124.8), 175: (46.7, 150.3), 200: (52.7, 259.5)}
-STUDY_NS2 = {25: (9.1, 3.1), 50: (17.9, 16.6), 75: (26.1, 36.3), 100: (30.2, 76.2),
-             125: (35.2, 217.0), 150: (41.3, 284.4), 175: (46.3, 365.2), 200: (51.9, 393.7)}
+# simulator), the first two columns of its Tables II (ARGoS with ns-3) and I (ARGoS with ns-2).
+STUDY_NS3 = {n: row[:2] for n, row in TABLE_II_NS3.items()}
+STUDY_NS2 = {n: row[:2] for n, row in TABLE_I_NS2.items()}
 STUDY_DURATION_S = 200.0
 
 FIELDS = ["arena.width_m", "duration_s", "cpu_s.robot", "cpu_s.network", "cpu_s.transport",
