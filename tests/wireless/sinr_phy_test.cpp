@@ -448,5 +448,25 @@ TEST(WirelessChannel, LinksAreReusedWithinAStepOnlyWhenNoModelVariesPerFrame) {
   EXPECT_NE(faded[1], faded[2]);
 }
 
+TEST(WirelessChannel, APhyIsAttachedBeforeTheFirstFrameOnly) {
+  // The links a step keeps hold the receivers' PHYs: replacing one afterwards is refused.
+  PluginLoader loader;
+  Scenario scenario = test::make_scenario(loader, 2, "dcf80211", "direct");
+  scenario.network.propagation = {test::choose(loader, "log_distance", PluginKind::propagation)};
+  scenario.network.phy.model = PhyModel::sinr;
+  Scheduler scheduler;
+  Channel channel(scenario, PropagationChain(scenario, loader), scheduler, 2);
+  std::vector<RecordingListener> listeners(3);
+  Phy first(scenario.network.phy, listeners[0], &scheduler, 0);
+  Phy second(scenario.network.phy, listeners[1], &scheduler, 1);
+  Phy replacement(scenario.network.phy, listeners[2], &scheduler, 1);
+  channel.attach(0, first);
+  channel.attach(1, second);
+  channel.attach(1, replacement);  // still before any frame: allowed
+  channel.set_positions(std::vector<Vec2>{Vec2(0, 0), Vec2(30, 0)});
+  channel.transmit(0, frame(0), us(100));
+  EXPECT_THROW(channel.attach(1, second), std::logic_error);
+}
+
 }  // namespace
 }  // namespace swarmnet

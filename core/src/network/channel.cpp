@@ -42,6 +42,8 @@ Channel::Channel(const Scenario& scenario, PropagationChain chain, Scheduler& sc
 }
 
 void Channel::attach(NodeId node, Phy& phy) {
+  // Before the first frame only: the links a step keeps hold the receivers' PHYs.
+  if (frames_sent() > 0) throw std::logic_error("Channel: a PHY attached after the first frame");
   phys_.at(node) = &phy;
   if (has_quiet_signals_) phy.set_quiet_signal_source(this, node);
 }
@@ -138,8 +140,8 @@ void Channel::compute_links(NodeId transmitter, std::uint64_t uid, Links& links)
     const double power_dbm =
         link_power_dbm({transmitter, receiver, tx_position, rx_position, distance_m, uid});
     if (power_dbm < event_dbm_) return;  // inaudible, or quiet: see quiet_signals()
-    links.push_back(
-        Link{propagation_delay(distance_m), receiver, power_dbm, dbm_to_milliwatts(power_dbm)});
+    links.push_back(Link{propagation_delay(distance_m), receiver, phys_[receiver], power_dbm,
+                         dbm_to_milliwatts(power_dbm)});
   };
   if (use_grid_) {
     // In cell order: the links are sorted below, so the visit needs no order of its own.
@@ -218,15 +220,16 @@ void Channel::schedule_next(std::uint32_t index) {
         // Steps that are due next are run here, without a round trip through the heap.
         FrameFanout& f = *fanouts_[index];
         std::size_t& next = kEnds ? f.next_end : f.next_start;
+        const Links& links = *f.links;
         while (true) {
-          const Link& link = (*f.links)[next++];
-          Phy& phy = *phys_[link.receiver];
+          const Link& link = links[next++];
+          Phy& phy = *link.phy;
           if constexpr (kEnds) {
             phy.signal_end(f.frame, link.power_dbm);
           } else {
             phy.signal_start(f.frame.uid, link.power_dbm, link.power_mw);
           }
-          if (next == f.links->size()) {
+          if (next == links.size()) {
             // Recycled only after the last end: the receivers' callbacks read the frame.
             if constexpr (kEnds) release_fanout(index);
             return;

@@ -61,7 +61,7 @@ class Channel final : public QuietSignalSource {
   ~Channel() = default;
 
   // Registers node `node`'s PHY (and makes the channel its quiet-signal source); every node must
-  // have one before the first transmission.
+  // have one before the first transmission, and none is attached after it (std::logic_error).
   void attach(NodeId node, Phy& phy);
 
   // Moves every node (one position per node) and rebuilds the grid.
@@ -95,6 +95,7 @@ class Channel final : public QuietSignalSource {
   struct Link {
     SimTime delay;
     NodeId receiver;
+    Phy* phy;  // the receiver's, kept beside the link: one cache line per receiver, not two
     double power_dbm;
     double power_mw;
   };
