@@ -11,14 +11,15 @@
 #include <vector>
 
 #include "bench_command.hpp"
+#include "coupling/network_process.hpp"
+#include "coupling/stop_signal.hpp"
 #include "default_scenario.hpp"
+#include "display/summary_printout.hpp"
 #include "plugin/plugin_catalog.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "replay_command.hpp"
-#include "run/network_process.hpp"
-#include "run/run.hpp"
-#include "run/stop_signal.hpp"
 #include "scenario/scenario_loader.hpp"
+#include "session/run.hpp"
 #include "stats_command.hpp"
 #include "sweep_command.hpp"
 
@@ -82,7 +83,7 @@ int run_command(ScenarioArguments args, bool quiet, const TransportArguments& tr
         std::chrono::milliseconds(std::llround(transport.step_timeout_s * 1e3));
     swarmnet::install_stop_handlers();
     const auto outcome = swarmnet::run_scenario(scenario, options);
-    if (!quiet) swarmnet::print_summary(stdout, outcome);
+    if (!quiet) swarmnet::print_summary(stdout, outcome.summary, outcome.dir);
   } catch (const std::exception& error) {
     const int signal = swarmnet::stop_signal();
     return fail(signal != 0 ? 128 + signal : kRunFailed, error.what());

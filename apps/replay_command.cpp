@@ -5,8 +5,8 @@
 #include <iterator>
 #include <string>
 
-#include "run/output_files.hpp"
-#include "run/replay.hpp"
+#include "outputs/output_files.hpp"
+#include "session/replay.hpp"
 
 namespace swarmnet {
 

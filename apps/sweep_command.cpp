@@ -16,10 +16,10 @@
 #include <thread>
 #include <vector>
 
+#include "coupling/stop_signal.hpp"
+#include "outputs/atomic_file.hpp"
+#include "outputs/output_files.hpp"
 #include "plugin/plugin_loader.hpp"
-#include "run/atomic_file.hpp"
-#include "run/output_files.hpp"
-#include "run/stop_signal.hpp"
 #include "scenario/scenario_loader.hpp"
 #include "sweep_file.hpp"
 #include "sweep_results.hpp"

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "network/network_simulator.hpp"
+#include "outputs/run_summary.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "scenario/default_plugin_choice.hpp"
 #include "swarmnet/random.hpp"
@@ -93,7 +94,7 @@ nlohmann::ordered_json run(PluginLoader& loader, std::uint32_t nodes, double sim
     simulator.run_step(batch, result);
     cpu += cpu_seconds() - before;
   }
-  const auto report = simulator.report();
+  const auto report = network_report_json(simulator.report());
   nlohmann::ordered_json row;
   row["nodes"] = nodes;
   row["side_m"] = side;

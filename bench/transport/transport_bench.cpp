@@ -28,10 +28,10 @@
 #include <vector>
 
 #include "inproc_channel.hpp"
+#include "protocol/step_channel.hpp"
 #include "ring_transport.hpp"
 #include "shm_segment.hpp"
 #include "socket_transport.hpp"
-#include "step_channel.hpp"
 
 namespace swarmnet {
 namespace {

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "network_test_support.hpp"
+#include "outputs/run_summary.hpp"
 
 namespace swarmnet {
 namespace {
@@ -82,7 +83,7 @@ TEST_F(NetworkApplicationUnit, DuplicatesAreSuppressedPerNode) {
   EXPECT_EQ(deliveries_[0].hops, 2U);
   EXPECT_EQ(deliveries_[0].delivered_at, SimTime{100});
   EXPECT_EQ(deliveries_[1].receiver, 2U);
-  const auto report = metrics_.report(application_.undelivered_unicast(), 0);
+  const auto report = network_report_json(metrics_.report(application_.undelivered_unicast(), 0));
   EXPECT_EQ(report["packets"]["broadcast_deliveries"], 2);
   EXPECT_EQ(report["packets"]["duplicates"], 1);
 }
@@ -95,7 +96,7 @@ TEST_F(NetworkApplicationUnit, OnlyTheDestinationsFirstDeliveryCounts) {
   EXPECT_TRUE(application_.deliver(2, copy, SimTime{5'000}));
   EXPECT_FALSE(application_.deliver(2, copy, SimTime{6'000}));
   EXPECT_EQ(application_.undelivered_unicast(), 0U);
-  const auto report = metrics_.report(application_.undelivered_unicast(), 0);
+  const auto report = network_report_json(metrics_.report(application_.undelivered_unicast(), 0));
   EXPECT_EQ(report["packets"]["delivered"], 1);
   EXPECT_EQ(report["pdr"].get<double>(), 1.0);
   EXPECT_DOUBLE_EQ(report["delay_s"]["mean"].get<double>(), 4e-6);
@@ -119,7 +120,7 @@ TEST(NetworkMetrics, PercentilesUseTheNearestRank) {
     metrics.unicast_delivered(SimTime{i * 1'000'000}, static_cast<std::uint32_t>(i % 3));
   }
   metrics.message_sent(false);  // never delivered
-  const auto report = metrics.report(1, 0);
+  const auto report = network_report_json(metrics.report(1, 0));
   EXPECT_DOUBLE_EQ(report["pdr"].get<double>(), 20.0 / 21.0);
   EXPECT_DOUBLE_EQ(report["delay_s"]["mean"].get<double>(), 0.0105);
   EXPECT_DOUBLE_EQ(report["delay_s"]["p50"].get<double>(), 0.010);  // rank ceil(0.5 * 20) = 10
@@ -127,7 +128,7 @@ TEST(NetworkMetrics, PercentilesUseTheNearestRank) {
   metrics.mac_count("retries", 4);
   metrics.mac_count("backoffs", 2);
   metrics.routing_count("control_rreq", 1);
-  const auto later = metrics.report(1, 0);
+  const auto later = network_report_json(metrics.report(1, 0));
   EXPECT_EQ(later["mac"]["retries"], 4);
   EXPECT_EQ(later["mac"]["backoffs"], 2);
   EXPECT_EQ(later["routing"]["control_rreq"], 1);

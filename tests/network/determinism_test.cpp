@@ -3,6 +3,7 @@
 
 #include "network/network_simulator.hpp"
 #include "network_test_support.hpp"
+#include "outputs/run_summary.hpp"
 
 namespace swarmnet {
 namespace {
@@ -51,7 +52,7 @@ TEST(NetworkSimulator, ReportHasEveryKeyWithZerosIncluded) {
   PluginLoader loader;
   const Scenario scenario = test::make_scenario(loader, 2);
   const NetworkSimulator simulator(scenario, loader, nullptr);
-  const auto report = simulator.report();
+  const auto report = network_report_json(simulator.report());
   const char* keys[] = {"packets", "pdr", "delay_s", "hops_mean", "mac", "routing", "events"};
   std::size_t i = 0;
   for (const auto& [key, value] : report.items()) {

@@ -4,7 +4,7 @@
 #include <algorithm>
 
 #include "network_test_support.hpp"
-#include "step_data.hpp"
+#include "protocol/step_data.hpp"
 
 namespace swarmnet {
 namespace {

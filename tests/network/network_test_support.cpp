@@ -7,6 +7,7 @@
 
 #include "network/network_simulator.hpp"
 #include "network/packet_trace.hpp"
+#include "outputs/run_summary.hpp"
 #include "scenario/default_plugin_choice.hpp"
 #include "swarmnet/random.hpp"
 
@@ -118,7 +119,7 @@ RunOutput run(const Scenario& scenario, PluginLoader& loader,
       for (auto& delivery : result.deliveries) output.deliveries.push_back(std::move(delivery));
     }
     simulator.finish();
-    output.report = simulator.report();
+    output.report = network_report_json(simulator.report());
   }
   output.trace = trace.str();
   return output;

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "plugin/plugin_loader.hpp"
+#include "protocol/step_data.hpp"
 #include "scenario/scenario.hpp"
-#include "step_data.hpp"
 #include "swarmnet/params.hpp"
 
 namespace swarmnet::test {

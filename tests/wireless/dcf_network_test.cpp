@@ -9,6 +9,7 @@
 
 #include "network/network_simulator.hpp"
 #include "network_test_support.hpp"
+#include "outputs/run_summary.hpp"
 #include "swarmnet/wifi_ofdm.hpp"
 
 namespace swarmnet {
@@ -44,7 +45,7 @@ Outcome simulate(const Scenario& scenario, PluginLoader& loader,
     simulator.run_step(batch, result);
     for (auto& d : result.deliveries) outcome.deliveries.push_back(std::move(d));
   }
-  outcome.report = simulator.report();
+  outcome.report = network_report_json(simulator.report());
   return outcome;
 }
 

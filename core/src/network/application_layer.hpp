@@ -23,7 +23,7 @@
 #include "network/network_metrics.hpp"
 #include "network/packet_trace.hpp"
 #include "network/packet_uid_source.hpp"
-#include "step_data.hpp"
+#include "protocol/step_data.hpp"
 #include "swarmnet/packet.hpp"
 #include "swarmnet/routing.hpp"
 

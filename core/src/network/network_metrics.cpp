@@ -24,18 +24,23 @@ std::int64_t nearest_rank(const std::vector<std::int64_t>& sorted, std::size_t p
   return sorted[rank - 1];
 }
 
+// The counters `first` names, in that order (0 when never counted), then every other one by name.
 template <std::size_t N>
-void emit_counters(nlohmann::ordered_json& out, const std::array<const char*, N>& first,
-                   const std::map<std::string, std::uint64_t, std::less<>>& counters) {
+std::vector<NamedCount> ordered_counters(
+    const std::array<const char*, N>& first,
+    const std::map<std::string, std::uint64_t, std::less<>>& counters) {
+  std::vector<NamedCount> out;
+  out.reserve(counters.size() + N);
   for (const char* key : first) {
     const auto it = counters.find(std::string_view(key));
-    out[key] = it == counters.end() ? 0 : it->second;
+    out.push_back({key, it == counters.end() ? 0 : it->second});
   }
   for (const auto& entry : counters) {
     const bool listed = std::any_of(first.begin(), first.end(),
                                     [&entry](const char* k) { return entry.first == k; });
-    if (!listed) out[entry.first] = entry.second;
+    if (!listed) out.push_back({entry.first, entry.second});
   }
+  return out;
 }
 
 }  // namespace
@@ -89,55 +94,38 @@ void NetworkMetrics::add(CounterMap& counters, std::string_view counter, std::ui
   }
 }
 
-nlohmann::ordered_json NetworkMetrics::report(std::uint64_t in_flight, std::uint64_t events) const {
-  using Json = nlohmann::ordered_json;
-  Json out;
-  Json packets;
-  packets["sent"] = sent_;
-  packets["delivered"] = delivered();
-  Json dropped = Json::object();
-  for (const DropReason reason : kDropReasons) dropped[to_string(reason)] = drops(reason);
-  packets["dropped"] = dropped;
-  packets["broadcast_sent"] = broadcast_sent_;
-  packets["broadcast_deliveries"] = broadcast_deliveries_;
-  packets["in_flight"] = in_flight;
-  packets["duplicates"] = duplicates_;
-  out["packets"] = packets;
+NetworkReport NetworkMetrics::report(std::uint64_t in_flight, std::uint64_t events) const {
+  NetworkReport out;
+  out.sent = sent_;
+  out.delivered = delivered();
+  for (const DropReason reason : kDropReasons)
+    out.dropped.push_back({to_string(reason), drops(reason)});
+  out.broadcast_sent = broadcast_sent_;
+  out.broadcast_deliveries = broadcast_deliveries_;
+  out.in_flight = in_flight;
+  out.duplicates = duplicates_;
 
   const std::uint64_t unicast = unicast_sent();
-  out["pdr"] = unicast == 0 ? 0.0 : static_cast<double>(delivered()) / static_cast<double>(unicast);
+  out.pdr = unicast == 0 ? 0.0 : static_cast<double>(delivered()) / static_cast<double>(unicast);
 
-  Json delay;
-  if (delays_ns_.empty()) {
-    delay["mean"] = nullptr;
-    delay["p50"] = nullptr;
-    delay["p95"] = nullptr;
-    out["delay_s"] = delay;
-    out["hops_mean"] = nullptr;
-  } else {
+  if (!delays_ns_.empty()) {
     std::vector<std::int64_t> sorted = delays_ns_;
     std::sort(sorted.begin(), sorted.end());
     // Integer sum (exact), then one division: the mean does not depend on summation order.
     std::int64_t total_ns = 0;
     for (const std::int64_t d : sorted) total_ns += d;
     const auto n = static_cast<double>(sorted.size());
-    delay["mean"] = static_cast<double>(total_ns) * 1e-9 / n;
-    delay["p50"] = to_seconds(SimTime{nearest_rank(sorted, 50)});
-    delay["p95"] = to_seconds(SimTime{nearest_rank(sorted, 95)});
-    out["delay_s"] = delay;
-    out["hops_mean"] = static_cast<double>(hops_total_) / n;
+    out.delay_mean_s = static_cast<double>(total_ns) * 1e-9 / n;
+    out.delay_p50_s = to_seconds(SimTime{nearest_rank(sorted, 50)});
+    out.delay_p95_s = to_seconds(SimTime{nearest_rank(sorted, 95)});
+    out.hops_mean = static_cast<double>(hops_total_) / n;
   }
 
-  Json mac = Json::object();
-  emit_counters(mac, kMacKeys, mac_);
-  out["mac"] = mac;
-
+  out.mac = ordered_counters(kMacKeys, mac_);
   CounterMap routing = routing_;
   routing["data_forwards"] += data_forwards_;
-  Json routing_json = Json::object();
-  emit_counters(routing_json, kRoutingKeys, routing);
-  out["routing"] = routing_json;
-  out["events"] = events;
+  out.routing = ordered_counters(kRoutingKeys, routing);
+  out.events = events;
   return out;
 }
 

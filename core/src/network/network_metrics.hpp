@@ -29,11 +29,11 @@
 #include <cstdint>
 #include <functional>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "protocol/network_report.hpp"
 #include "swarmnet/packet.hpp"
 #include "swarmnet/units.hpp"
 
@@ -60,8 +60,8 @@ class NetworkMetrics {
   [[nodiscard]] std::uint64_t delivered() const { return delays_ns_.size(); }
   [[nodiscard]] std::uint64_t drops(DropReason reason) const;
 
-  // The JSON described above; `in_flight` and `events` come from the simulator.
-  [[nodiscard]] nlohmann::ordered_json report(std::uint64_t in_flight, std::uint64_t events) const;
+  // The report described above; `in_flight` and `events` come from the simulator.
+  [[nodiscard]] NetworkReport report(std::uint64_t in_flight, std::uint64_t events) const;
 
  private:
   using CounterMap = std::map<std::string, std::uint64_t, std::less<>>;

@@ -116,7 +116,7 @@ void NetworkSimulator::run_step(const StepBatch& batch, StepResult& result) {
   result.events = events;
 }
 
-nlohmann::ordered_json NetworkSimulator::report() const {
+NetworkReport NetworkSimulator::report() const {
   return metrics_.report(application_.undelivered_unicast(), scheduler_.events_run());
 }
 

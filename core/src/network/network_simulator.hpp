@@ -11,7 +11,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <ostream>
 #include <vector>
 
@@ -23,8 +22,8 @@
 #include "network/packet_uid_source.hpp"
 #include "network/scheduler.hpp"
 #include "plugin/plugin_loader.hpp"
+#include "protocol/step_data.hpp"
 #include "scenario/scenario.hpp"
-#include "step_data.hpp"
 
 namespace swarmnet {
 
@@ -51,7 +50,7 @@ class NetworkSimulator {
   void run_step(const StepBatch& batch, StepResult& result);
 
   // Metrics so far (keys and definitions: network_metrics.hpp).
-  [[nodiscard]] nlohmann::ordered_json report() const;
+  [[nodiscard]] NetworkReport report() const;
 
   // Flushes the packet trace (there is no footer); call once, at the end.
   void finish();

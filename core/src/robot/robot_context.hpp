@@ -7,8 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "protocol/step_data.hpp"
 #include "robot/controller_metrics.hpp"
-#include "step_data.hpp"
 #include "swarmnet/controller.hpp"
 #include "swarmnet/robot_body.hpp"
 

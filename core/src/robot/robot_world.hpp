@@ -8,10 +8,10 @@
 
 #include "plugin/plugin_instance.hpp"
 #include "plugin/plugin_loader.hpp"
+#include "protocol/step_data.hpp"
 #include "robot/controller_metrics.hpp"
 #include "robot/robot_context.hpp"
 #include "scenario/scenario.hpp"
-#include "step_data.hpp"
 #include "swarmnet/controller.hpp"
 #include "swarmnet/physics.hpp"
 

@@ -31,6 +31,10 @@ struct PluginChoice {
 
 enum class SyncMode : std::uint8_t { strict, pipelined };
 
+inline const char* to_string(SyncMode mode) {
+  return mode == SyncMode::strict ? "strict" : "pipelined";
+}
+
 struct ProximityConfig {
   std::uint32_t rays = 24;
   double range_m = 0.3;

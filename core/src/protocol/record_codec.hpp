@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstring>
 #include <span>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -89,5 +90,16 @@ class RecordReader {
   std::span<const std::byte> record_;
   std::size_t position_ = 0;
 };
+
+// Text fields: the longest text a record may carry, and a text's bytes seen both ways.
+inline constexpr std::uint32_t kMaxTextBytes = 1U << 24U;
+
+inline std::span<const std::byte> as_bytes(const std::string& text) {
+  return {reinterpret_cast<const std::byte*>(text.data()), text.size()};
+}
+
+inline std::string as_text(std::span<const std::byte> bytes) {
+  return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
+}
 
 }  // namespace swarmnet

@@ -1,4 +1,4 @@
-#include "run/traffic_schedule.hpp"
+#include "outputs/traffic_schedule.hpp"
 
 namespace swarmnet {
 

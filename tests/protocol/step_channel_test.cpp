@@ -1,10 +1,10 @@
 // The step protocol's records: round trips, and clear errors for malformed or unexpected input.
-#include "step_channel.hpp"
+#include "protocol/step_channel.hpp"
 
 #include <gtest/gtest.h>
 
 #include "inproc_channel.hpp"
-#include "record_codec.hpp"
+#include "protocol/record_codec.hpp"
 
 namespace swarmnet {
 namespace {
@@ -95,10 +95,38 @@ TEST(StepChannel, ResultAndReportRoundTrip) {
     EXPECT_EQ(got.deliveries[i].hops, sent.deliveries[i].hops);
     EXPECT_EQ(got.deliveries[i].payload, sent.deliveries[i].payload);
   }
-  ASSERT_TRUE(network.send_report(R"({"pdr":0.5})").ok());
-  std::string report;
-  ASSERT_TRUE(robot.receive_report(report).ok());
-  EXPECT_EQ(report, R"({"pdr":0.5})");
+  NetworkReport report;
+  report.sent = 10;
+  report.delivered = 5;
+  report.dropped = {{"no_route", 2}, {"queue_full", 0}};
+  report.pdr = 0.5;
+  report.delay_mean_s = 0.25;
+  report.hops_mean = 1.5;
+  report.mac = {{"tx_frames", 40}, {"acks", 7}};
+  report.routing = {{"control_packets", 3}};
+  report.events = 12345;
+  report.network_cpu_s = 0.75;
+  ASSERT_TRUE(network.send_report(report).ok());
+  NetworkReport received;
+  ASSERT_TRUE(robot.receive_report(received).ok());
+  EXPECT_EQ(received, report);
+  EXPECT_FALSE(received.delay_p50_s.has_value());
+}
+
+TEST(StepChannel, AReportWithImpossiblyManyCountersIsMalformed) {
+  WaitPolicy impatient;
+  impatient.timeout = std::chrono::seconds(5);
+  InprocChannel link(std::uint64_t{1} << 16, impatient);
+  StepChannel robot(link.robot_end(), "the network half");
+  // type, sent, delivered, then a dropped-list length far beyond any report's.
+  ASSERT_EQ(link.network_end().send(encode(RecordType::report, std::uint64_t{1}, std::uint64_t{1},
+                                           std::uint32_t{0xFFFFFFFF})),
+            IoStatus::ok);
+  ASSERT_EQ(link.network_end().flush(), IoStatus::ok);
+  NetworkReport received;
+  const ProtocolResult r = robot.receive_report(received);
+  EXPECT_EQ(r.io, IoStatus::corrupt);
+  EXPECT_NE(r.error.find("malformed report record"), std::string::npos) << r.error;
 }
 
 TEST(StepChannel, MalformedRecordsAreNamed) {

@@ -1,4 +1,4 @@
-#include "run/run.hpp"
+#include "session/run.hpp"
 
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
@@ -10,26 +10,25 @@
 #include <sstream>
 #include <thread>
 
+#include "coupling/cpu_clock.hpp"
+#include "coupling/network_link.hpp"
+#include "coupling/stop_signal.hpp"
+#include "display/progress_line.hpp"
+#include "outputs/atomic_file.hpp"
+#include "outputs/mobility_trace.hpp"
+#include "outputs/output_files.hpp"
+#include "outputs/positions_trace.hpp"
+#include "outputs/run_error.hpp"
+#include "outputs/run_summary.hpp"
+#include "outputs/traffic_schedule.hpp"
 #include "plugin/plugin_loader.hpp"
+#include "protocol/step_channel.hpp"
 #include "robot/robot_world.hpp"
-#include "run/atomic_file.hpp"
-#include "run/cpu_clock.hpp"
-#include "run/mobility_trace.hpp"
-#include "run/network_link.hpp"
-#include "run/output_files.hpp"
-#include "run/positions_trace.hpp"
-#include "run/progress_line.hpp"
-#include "run/run_error.hpp"
-#include "run/stop_signal.hpp"
-#include "run/traffic_schedule.hpp"
 #include "shm_segment.hpp"
-#include "step_channel.hpp"
 
 namespace swarmnet {
 
 namespace {
-
-const char* to_string(SyncMode mode) { return mode == SyncMode::strict ? "strict" : "pipelined"; }
 
 // The channel to the network half failed; distinct from a failure of the robot half itself.
 class PeerLost : public RunError {
@@ -73,18 +72,6 @@ void log_plugins(RunLog& log, const Scenario& scenario, PluginLoader& loader) {
   describe(scenario.network.routing);
 }
 
-nlohmann::ordered_json controller_metrics_json(const RobotWorld& world) {
-  nlohmann::ordered_json metrics = nlohmann::ordered_json::object();
-  for (const auto& [name, stats] : world.controller_metrics()) {
-    metrics[name] = {{"count", stats.count},
-                     {"sum", stats.sum},
-                     {"mean", stats.count > 0 ? stats.sum / static_cast<double>(stats.count) : 0.0},
-                     {"min", stats.count > 0 ? nlohmann::ordered_json(stats.min) : nullptr},
-                     {"max", stats.count > 0 ? nlohmann::ordered_json(stats.max) : nullptr}};
-  }
-  return metrics;
-}
-
 // Removes files that other processes left under a temporary name (AtomicFile's ".partial-PID")
 // in `dir`; this process's own (the log being written) stay.
 void remove_partial_files(const std::filesystem::path& dir) {
@@ -115,10 +102,10 @@ struct RobotLoopCost {
   double transport_cpu_s = 0.0;
 };
 
-std::string drive_robot_half(const Scenario& scenario, RobotWorld& world, StepChannel& channel,
-                             MobilityTraceWriter* mobility, PositionsTraceWriter* positions,
-                             TrafficScheduleWriter* traffic, ProgressLine& progress,
-                             RobotLoopCost& cost) {
+NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, StepChannel& channel,
+                               MobilityTraceWriter* mobility, PositionsTraceWriter* positions,
+                               TrafficScheduleWriter* traffic, ProgressLine& progress,
+                               RobotLoopCost& cost) {
   const std::uint64_t steps = scenario.step_count();
   const std::uint64_t lag = delivery_lag(scenario.sync);
   StepBatch batch;
@@ -165,7 +152,7 @@ std::string drive_robot_half(const Scenario& scenario, RobotWorld& world, StepCh
   // Windows whose deliveries no robot step will read any more: still simulated and counted.
   for (std::uint64_t step = steps > lag ? steps - lag : 0; step < steps; ++step) receive(step);
   if (const ProtocolResult r = channel.send_finish(); !r.ok()) throw PeerLost(r.error);
-  std::string report;
+  NetworkReport report;
   if (const ProtocolResult r = channel.receive_report(report); !r.ok()) throw PeerLost(r.error);
   return report;
 }
@@ -226,7 +213,7 @@ RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
     log.line("transport: " + link->describe());
 
     RobotLoopCost cost;
-    std::string report_text;
+    NetworkReport report;
     std::string robot_error;
     bool lost_peer = false;
     {
@@ -234,9 +221,9 @@ RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
       try {
         handshake(scenario, outcome.dir, channel);
         link->connected();
-        report_text = drive_robot_half(scenario, world, channel, mobility ? &*mobility : nullptr,
-                                       positions ? &*positions : nullptr,
-                                       traffic ? &*traffic : nullptr, progress, cost);
+        report = drive_robot_half(scenario, world, channel, mobility ? &*mobility : nullptr,
+                                  positions ? &*positions : nullptr, traffic ? &*traffic : nullptr,
+                                  progress, cost);
       } catch (const PeerLost& error) {
         robot_error = error.what();
         lost_peer = true;
@@ -261,52 +248,25 @@ RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
     const double wall_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     const double robot_cpu = thread_cpu_seconds() - cpu_start - cost.transport_cpu_s;
-    const auto report = nlohmann::ordered_json::parse(report_text);
-    const double network_cpu = report["cpu_s"]["network"].get<double>();
-    const double transport_cpu = cost.transport_cpu_s + report["cpu_s"]["transport"].get<double>();
-    const double sim_s = static_cast<double>(scenario.step_count()) * scenario.step_s;
 
     if (mobility_file) mobility_file->commit();
     if (positions_file) positions_file->commit();
     if (traffic_file) traffic_file->commit();
 
-    nlohmann::ordered_json& s = outcome.summary;
-    s["scenario"] = scenario.name;
-    s["scenario_file"] = scenario.source.string();
-    s["seed"] = scenario.seed;
-    s["robots"] = scenario.robots.count;
-    s["sim_time_s"] = sim_s;
-    s["step_s"] = scenario.step_s;
-    s["steps"] = scenario.step_count();
-    s["sync"] = to_string(scenario.sync);
-    s["transport"] =
+    SummaryInputs summary;
+    summary.scenario = &scenario;
+    summary.transport =
         options.link.remote.empty() ? to_string(options.link.kind) : options.link.remote;
-    s["wall_s"] = wall_s;
-    s["cpu_s"] = {{"robot", robot_cpu},
-                  {"network", network_cpu},
-                  {"transport", transport_cpu},
-                  {"total", robot_cpu + network_cpu + transport_cpu}};
-    s["realtime_factor"] = wall_s > 0 ? sim_s / wall_s : 0.0;
-    // CPU both halves spent encoding, moving and waiting on records, as a share of the run.
-    s["transport_share"] = wall_s > 0 ? transport_cpu / wall_s : 0.0;
-    for (const char* key : {"packets", "pdr", "delay_s", "hops_mean", "mac", "routing", "events"}) {
-      if (report.contains(key)) s[key] = report[key];
-    }
-    s["controllers"] = controller_metrics_json(world);
-    nlohmann::ordered_json outputs = {
-        {"summary", kSummaryFile}, {"scenario", kResolvedScenarioFile}, {"log", kLogFile}};
-    if (scenario.output.packet_trace) outputs["packet_trace"] = kPacketTraceFile;
-    if (scenario.output.mobility_trace) {
-      outputs["mobility_trace"] = kMobilityTraceFile;
-      outputs["positions"] = kPositionsTraceFile;
-    }
-    if (scenario.output.traffic_schedule) outputs["traffic_schedule"] = kTrafficScheduleFile;
-    s["outputs"] = outputs;
+    summary.timings = {wall_s, robot_cpu, report.network_cpu_s,
+                       cost.transport_cpu_s + report.transport_cpu_s};
+    summary.network = &report;
+    summary.controllers = &world.controller_metrics();
+    outcome.summary = build_summary(summary);
 
     log.line("finished: " + std::to_string(scenario.step_count()) + " steps");
     log.commit();
     // Last, so that a summary.json is present only when every other output is complete.
-    write_file_atomically(outcome.dir / kSummaryFile, s.dump(2) + "\n");
+    write_file_atomically(outcome.dir / kSummaryFile, outcome.summary.dump(2) + "\n");
   } catch (const std::exception& error) {
     // Both halves have stopped by now; a network half that was killed could not remove its own.
     remove_partial_files(outcome.dir);
@@ -319,35 +279,6 @@ RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
     throw;
   }
   return outcome;
-}
-
-void print_summary(std::FILE* out, const RunOutcome& outcome) {
-  const auto& s = outcome.summary;
-  const auto& packets = s["packets"];
-  std::fprintf(out, "SwarmNet run '%s' (seed %" PRIu64 ")\n",
-               s["scenario"].get<std::string>().c_str(), s["seed"].get<std::uint64_t>());
-  std::fprintf(out, "  robots        %u\n", s["robots"].get<unsigned>());
-  std::fprintf(out, "  simulated     %.1f s in %" PRIu64 " steps of %g s (%s sync)\n",
-               s["sim_time_s"].get<double>(), s["steps"].get<std::uint64_t>(),
-               s["step_s"].get<double>(), s["sync"].get<std::string>().c_str());
-  std::fprintf(out, "  wall time     %.2f s, %.1fx real time\n", s["wall_s"].get<double>(),
-               s["realtime_factor"].get<double>());
-  std::fprintf(out, "  CPU           robot %.2f s, network %.2f s, transport %.3f s\n",
-               s["cpu_s"]["robot"].get<double>(), s["cpu_s"]["network"].get<double>(),
-               s["cpu_s"]["transport"].get<double>());
-  std::fprintf(out,
-               "  messages      %" PRIu64 " sent, %" PRIu64 " delivered, delivery ratio %.1f%%\n",
-               packets["sent"].get<std::uint64_t>(), packets["delivered"].get<std::uint64_t>(),
-               100.0 * s["pdr"].get<double>());
-  const auto& delay = s["delay_s"];
-  if (!delay["mean"].is_null()) {
-    std::fprintf(out, "  delay         mean %.2f ms, median %.2f ms, 95th percentile %.2f ms\n",
-                 1e3 * delay["mean"].get<double>(), 1e3 * delay["p50"].get<double>(),
-                 1e3 * delay["p95"].get<double>());
-    std::fprintf(out, "  hops          %.2f on average\n", s["hops_mean"].get<double>());
-  }
-  std::fprintf(out, "  outputs       %s/ (summary.json, run.log, ...)\n",
-               outcome.dir.string().c_str());
 }
 
 }  // namespace swarmnet

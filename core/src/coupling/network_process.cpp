@@ -1,4 +1,4 @@
-#include "run/network_process.hpp"
+#include "coupling/network_process.hpp"
 
 #include <signal.h>
 #include <sys/prctl.h>
@@ -7,15 +7,15 @@
 #include <cstdio>
 #include <memory>
 
+#include "coupling/network_half.hpp"
+#include "coupling/network_link.hpp"
+#include "outputs/run_error.hpp"
 #include "plugin/plugin_loader.hpp"
+#include "protocol/step_channel.hpp"
 #include "ring_transport.hpp"
-#include "run/network_half.hpp"
-#include "run/network_link.hpp"
-#include "run/run_error.hpp"
 #include "scenario/scenario_loader.hpp"
 #include "shm_segment.hpp"
 #include "socket_transport.hpp"
-#include "step_channel.hpp"
 
 namespace swarmnet {
 

@@ -1,4 +1,4 @@
-#include "run/atomic_file.hpp"
+#include "outputs/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -6,7 +6,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "run/run_error.hpp"
+#include "outputs/run_error.hpp"
 
 namespace swarmnet {
 

@@ -1,4 +1,4 @@
-#include "run/child_process.hpp"
+#include "coupling/child_process.hpp"
 
 #include <signal.h>
 #include <spawn.h>
@@ -9,7 +9,7 @@
 #include <cstring>
 #include <thread>
 
-#include "run/run_error.hpp"
+#include "outputs/run_error.hpp"
 
 namespace swarmnet {
 

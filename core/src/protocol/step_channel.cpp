@@ -1,6 +1,9 @@
-#include "step_channel.hpp"
+#include "protocol/step_channel.hpp"
 
 #include <algorithm>
+#include <cstring>
+
+#include "protocol/network_report_codec.hpp"
 
 namespace swarmnet {
 
@@ -9,15 +12,6 @@ namespace {
 // Positions travel in chunks so that no record approaches a ring's size at any swarm size.
 constexpr std::uint32_t kPositionsPerRecord = 1024;
 constexpr std::size_t kPositionBytes = 2 * sizeof(double);  // x, y
-constexpr std::uint32_t kMaxTextBytes = 1U << 24U;
-
-std::span<const std::byte> as_bytes(const std::string& text) {
-  return {reinterpret_cast<const std::byte*>(text.data()), text.size()};
-}
-
-std::string as_text(std::span<const std::byte> bytes) {
-  return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
-}
 
 }  // namespace
 
@@ -329,18 +323,24 @@ ProtocolResult StepChannel::send_finish() {
   return send_record("finish", true, RecordType::finish);
 }
 
-ProtocolResult StepChannel::send_report(const std::string& json) {
-  return send_record("report", true, RecordType::report, as_bytes(json));
+ProtocolResult StepChannel::send_report(const NetworkReport& report) {
+  std::vector<std::byte> record;
+  encode_report(report, record);
+  std::span<std::byte> space;
+  IoStatus status = transport_.reserve(record.size(), space);
+  if (status == IoStatus::ok) {
+    std::memcpy(space.data(), record.data(), record.size());
+    status = transport_.commit();
+  }
+  return sent("report", status, true);
 }
 
-ProtocolResult StepChannel::receive_report(std::string& json) {
+ProtocolResult StepChannel::receive_report(NetworkReport& report) {
   RecordType type{};
   RecordReader* reader = nullptr;
   if (auto r = receive(type, reader); !r.ok()) return r;
   if (type != RecordType::report) return unexpected(type, "report");
-  std::span<const std::byte> text;
-  if (!reader->get_view(text, kMaxTextBytes) || !reader->at_end()) return malformed(type);
-  json = as_text(text);
+  if (!decode_report(*reader, report)) return malformed(type);
   return {};
 }
 

@@ -1,15 +1,14 @@
-#include "run/network_half.hpp"
+#include "coupling/network_half.hpp"
 
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <optional>
 
+#include "coupling/cpu_clock.hpp"
 #include "network/network_simulator.hpp"
+#include "outputs/atomic_file.hpp"
+#include "outputs/output_files.hpp"
+#include "outputs/run_error.hpp"
 #include "plugin/plugin_loader.hpp"
-#include "run/atomic_file.hpp"
-#include "run/cpu_clock.hpp"
-#include "run/output_files.hpp"
-#include "run/run_error.hpp"
 
 namespace swarmnet {
 
@@ -41,10 +40,11 @@ void serve(const Scenario& scenario, StepChannel& channel, const std::filesystem
   simulator.finish();
   if (trace) trace->commit();
 
-  nlohmann::ordered_json report = simulator.report();
+  NetworkReport report = simulator.report();
   const double total_cpu = thread_cpu_seconds() - cpu_start;
-  report["cpu_s"] = {{"network", total_cpu - transport_cpu}, {"transport", transport_cpu}};
-  const ProtocolResult sent = channel.send_report(report.dump());
+  report.network_cpu_s = total_cpu - transport_cpu;
+  report.transport_cpu_s = transport_cpu;
+  const ProtocolResult sent = channel.send_report(report);
   if (!sent.ok()) throw RunError(sent.error);
 }
 

@@ -1,4 +1,4 @@
-#include "run/positions_trace.hpp"
+#include "outputs/positions_trace.hpp"
 
 #include <array>
 #include <bit>
@@ -7,7 +7,7 @@
 #include <iterator>
 #include <string>
 
-#include "run/run_error.hpp"
+#include "outputs/run_error.hpp"
 
 namespace swarmnet {
 

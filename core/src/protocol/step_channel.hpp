@@ -3,7 +3,7 @@
 // Robot half -> network half, per step: step_begin, positions (in chunks), one message record
 // per application message, step_end. At the end: finish.
 // Network half -> robot half, per step: one delivery record per delivery, step_done. After
-// finish: report (the network's metrics as JSON text).
+// finish: report (the network's metrics, a NetworkReport).
 // Either side may send failure (a text) before it stops, so the other can say why.
 #pragma once
 
@@ -13,9 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "record_codec.hpp"
+#include "protocol/network_report.hpp"
+#include "protocol/record_codec.hpp"
+#include "protocol/step_data.hpp"
 #include "ring_status.hpp"
-#include "step_data.hpp"
 #include "transport.hpp"
 
 namespace swarmnet {
@@ -35,7 +36,7 @@ enum class RecordType : std::uint32_t {
 };
 
 // Version of the records above; both halves must speak the same one.
-inline constexpr std::uint32_t kStepProtocolVersion = 1;
+inline constexpr std::uint32_t kStepProtocolVersion = 2;
 
 // The handshake's initial parameters (the study's Fig. 1), sent by the robot half.
 struct Hello {
@@ -73,12 +74,12 @@ class StepChannel {
   ProtocolResult send_batch(const StepBatch& batch);
   ProtocolResult receive_result(StepResult& result);
   ProtocolResult send_finish();
-  ProtocolResult receive_report(std::string& json);
+  ProtocolResult receive_report(NetworkReport& report);
 
   // Network side: fills `batch`, or sets `finished` when the robot half sent finish.
   ProtocolResult receive_batch(StepBatch& batch, bool& finished);
   ProtocolResult send_result(const StepResult& result);
-  ProtocolResult send_report(const std::string& json);
+  ProtocolResult send_report(const NetworkReport& report);
 
   // Best effort: tells the peer why this side stops. Never waits.
   void send_failure(const std::string& message);

@@ -1,4 +1,4 @@
-#include "run/progress_line.hpp"
+#include "display/progress_line.hpp"
 
 #include <unistd.h>
 

@@ -1,19 +1,19 @@
-#include "run/network_link.hpp"
+#include "coupling/network_link.hpp"
 
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <thread>
 
+#include "coupling/child_process.hpp"
+#include "coupling/network_half.hpp"
+#include "coupling/stop_signal.hpp"
 #include "inproc_channel.hpp"
+#include "outputs/run_error.hpp"
+#include "protocol/step_channel.hpp"
 #include "ring_transport.hpp"
-#include "run/child_process.hpp"
-#include "run/network_half.hpp"
-#include "run/run_error.hpp"
-#include "run/stop_signal.hpp"
 #include "shm_segment.hpp"
 #include "socket_transport.hpp"
-#include "step_channel.hpp"
 #include "transport_error.hpp"
 
 namespace swarmnet {

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <functional>
 
+#include "protocol/step_channel.hpp"
 #include "scenario/scenario.hpp"
-#include "step_channel.hpp"
 
 namespace swarmnet {
 

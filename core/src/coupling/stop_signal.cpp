@@ -1,4 +1,4 @@
-#include "run/stop_signal.hpp"
+#include "coupling/stop_signal.hpp"
 
 #include <atomic>
 #include <csignal>

@@ -1,4 +1,4 @@
-#include "run/mobility_trace.hpp"
+#include "outputs/mobility_trace.hpp"
 
 #include <algorithm>
 #include <cinttypes>

@@ -1,4 +1,4 @@
-#include "run/replay.hpp"
+#include "session/replay.hpp"
 
 #include <chrono>
 #include <fstream>
@@ -6,15 +6,16 @@
 #include <string>
 #include <vector>
 
+#include "coupling/cpu_clock.hpp"
 #include "network/network_simulator.hpp"
+#include "outputs/atomic_file.hpp"
+#include "outputs/output_files.hpp"
+#include "outputs/positions_trace.hpp"
+#include "outputs/run_error.hpp"
+#include "outputs/run_summary.hpp"
 #include "plugin/plugin_loader.hpp"
-#include "run/atomic_file.hpp"
-#include "run/cpu_clock.hpp"
-#include "run/output_files.hpp"
-#include "run/positions_trace.hpp"
-#include "run/run_error.hpp"
+#include "protocol/step_data.hpp"
 #include "scenario/scenario_loader.hpp"
-#include "step_data.hpp"
 
 namespace swarmnet {
 
@@ -154,26 +155,15 @@ ReplayOutcome replay_network(const ReplayInputs& inputs, const std::filesystem::
 
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  const double sim_s = static_cast<double>(scenario.step_count()) * scenario.step_s;
-  const nlohmann::ordered_json report = simulator.report();
-  nlohmann::ordered_json& s = outcome.summary;
-  s["scenario"] = scenario.name;
-  s["replay_of"] = {{"scenario", inputs.scenario.string()},
-                    {"positions", inputs.positions.string()},
-                    {"traffic", inputs.traffic.string()}};
-  s["seed"] = scenario.seed;
-  s["robots"] = scenario.robots.count;
-  s["sim_time_s"] = sim_s;
-  s["step_s"] = scenario.step_s;
-  s["steps"] = scenario.step_count();
-  s["wall_s"] = wall_s;
-  s["cpu_s"] = {{"network", network_cpu}};
-  s["realtime_factor"] = wall_s > 0 ? sim_s / wall_s : 0.0;
-  for (const char* key : {"packets", "pdr", "delay_s", "hops_mean", "mac", "routing", "events"}) {
-    if (report.contains(key)) s[key] = report[key];
-  }
-  s["outputs"] = {{"summary", kSummaryFile}, {"packet_trace", kPacketTraceFile}};
-  write_file_atomically(out_dir / kSummaryFile, s.dump(2) + "\n");
+  const NetworkReport report = simulator.report();
+  SummaryInputs summary;
+  summary.scenario = &scenario;
+  summary.replay_of = SummaryInputs::ReplayOf{inputs.scenario, inputs.positions, inputs.traffic};
+  summary.timings.wall_s = wall_s;
+  summary.timings.network_cpu_s = network_cpu;
+  summary.network = &report;
+  outcome.summary = build_summary(summary);
+  write_file_atomically(out_dir / kSummaryFile, outcome.summary.dump(2) + "\n");
   return outcome;
 }
 

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "run/network_link.hpp"
+#include "coupling/network_link.hpp"
 #include "scenario/scenario.hpp"
 
 namespace swarmnet {
@@ -25,8 +25,5 @@ struct RunOutcome {
 // stopped the run) with a message naming what failed; files of a failed run are not left under
 // their final names, except run.log, which then ends with the error.
 RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options);
-
-// The human-readable summary printed after a run.
-void print_summary(std::FILE* out, const RunOutcome& outcome);
 
 }  // namespace swarmnet

@@ -7,7 +7,7 @@
 #include <ostream>
 #include <span>
 
-#include "step_data.hpp"
+#include "protocol/step_data.hpp"
 
 namespace swarmnet {
 

@@ -1,0 +1,35 @@
+#include "display/summary_printout.hpp"
+
+#include <cinttypes>
+
+namespace swarmnet {
+
+void print_summary(std::FILE* out, const nlohmann::ordered_json& s,
+                   const std::filesystem::path& run_dir) {
+  const auto& packets = s["packets"];
+  std::fprintf(out, "SwarmNet run '%s' (seed %" PRIu64 ")\n",
+               s["scenario"].get<std::string>().c_str(), s["seed"].get<std::uint64_t>());
+  std::fprintf(out, "  robots        %u\n", s["robots"].get<unsigned>());
+  std::fprintf(out, "  simulated     %.1f s in %" PRIu64 " steps of %g s (%s sync)\n",
+               s["sim_time_s"].get<double>(), s["steps"].get<std::uint64_t>(),
+               s["step_s"].get<double>(), s["sync"].get<std::string>().c_str());
+  std::fprintf(out, "  wall time     %.2f s, %.1fx real time\n", s["wall_s"].get<double>(),
+               s["realtime_factor"].get<double>());
+  std::fprintf(out, "  CPU           robot %.2f s, network %.2f s, transport %.3f s\n",
+               s["cpu_s"]["robot"].get<double>(), s["cpu_s"]["network"].get<double>(),
+               s["cpu_s"]["transport"].get<double>());
+  std::fprintf(out,
+               "  messages      %" PRIu64 " sent, %" PRIu64 " delivered, delivery ratio %.1f%%\n",
+               packets["sent"].get<std::uint64_t>(), packets["delivered"].get<std::uint64_t>(),
+               100.0 * s["pdr"].get<double>());
+  const auto& delay = s["delay_s"];
+  if (!delay["mean"].is_null()) {
+    std::fprintf(out, "  delay         mean %.2f ms, median %.2f ms, 95th percentile %.2f ms\n",
+                 1e3 * delay["mean"].get<double>(), 1e3 * delay["p50"].get<double>(),
+                 1e3 * delay["p95"].get<double>());
+    std::fprintf(out, "  hops          %.2f on average\n", s["hops_mean"].get<double>());
+  }
+  std::fprintf(out, "  outputs       %s/ (summary.json, run.log, ...)\n", run_dir.string().c_str());
+}
+
+}  // namespace swarmnet
