@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "stats/sample_statistics.hpp"
-#include "text_join.hpp"
+#include "text/text_join.hpp"
 
 namespace swarmnet {
 

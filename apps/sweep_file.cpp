@@ -7,7 +7,7 @@
 #include <optional>
 #include <set>
 
-#include "text_join.hpp"
+#include "text/text_join.hpp"
 
 namespace swarmnet {
 

@@ -7,7 +7,7 @@
 #include <system_error>
 #include <vector>
 
-#include "text_join.hpp"
+#include "text/text_join.hpp"
 
 namespace swarmnet {
 

@@ -7,7 +7,7 @@
 
 #include "plugin/plugin_catalog.hpp"
 #include "scenario/nearest_name.hpp"
-#include "text_join.hpp"
+#include "text/text_join.hpp"
 
 namespace swarmnet {
 

@@ -5,7 +5,7 @@
 
 #include "scenario/nearest_name.hpp"
 #include "scenario/scalar_rule.hpp"
-#include "text_join.hpp"
+#include "text/text_join.hpp"
 
 namespace swarmnet {
 

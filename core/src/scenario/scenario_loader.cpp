@@ -10,7 +10,7 @@
 #include "scenario/scenario_consistency.hpp"
 #include "scenario/scenario_overrides.hpp"
 #include "scenario/scenario_schema.hpp"
-#include "text_join.hpp"
+#include "text/text_join.hpp"
 
 namespace swarmnet {
 

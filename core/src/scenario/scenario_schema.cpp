@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "text_join.hpp"
+#include "text/text_join.hpp"
 
 namespace swarmnet {
 
