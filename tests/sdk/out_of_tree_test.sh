@@ -49,13 +49,22 @@ if grep -q "warning:" "$tmp/build.log"; then
   fail "the example built with warnings"
 fi
 # Only the installed headers: nothing from the source tree may be on the include path.
-grep -q -- "-I$src" "$tmp/example/compile_commands.json" &&
+# (The example's own folders are in the source tree too; SwarmNet's headers must not be.)
+grep -Eq -- "-I$src/(core|transport|plugins|apps|tests)" "$tmp/example/compile_commands.json" &&
   fail "the example saw the source tree's headers"
 grep -q -- "$prefix/include" "$tmp/example/compile_commands.json" ||
   fail "the example did not use the installed headers"
 for plugin in gossip follow_the_leader; do
   [[ -f $tmp/example/plugins/swarmnet_$plugin.so ]] || fail "swarmnet_$plugin.so not built"
 done
+[[ -f $prefix/include/swarmnet/testing.hpp ]] || fail "the SDK test kit is not installed"
+
+step "the example's plugins pass their own tests (SDK test kit, installed headers only)"
+ctest --test-dir "$tmp/example" --output-on-failure >"$tmp/ctest.log" 2>&1 ||
+  { cat "$tmp/ctest.log" >&2; fail "the example's plugin tests"; }
+grep -q "tests passed" "$tmp/ctest.log" || { cat "$tmp/ctest.log" >&2; fail "no plugin test ran"; }
+grep -Eq "Test +#[0-9]+: (Gossip|FollowTheLeader)" "$tmp/ctest.log" ||
+  { cat "$tmp/ctest.log" >&2; fail "the gossip and follow_the_leader tests were not registered"; }
 
 step "the installed swarmnet lists the example's plugins"
 # The installed plugins are found from the installed command itself (prefix/lib/swarmnet/plugins).

@@ -1,0 +1,89 @@
+// SDK test kit: a RobotContext whose sensors the test sets and whose actuators it reads, for
+// driving a controller plugin without a world.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <numbers>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "swarmnet/controller.hpp"
+#include "swarmnet/packet.hpp"
+
+namespace swarmnet::testing {
+
+class FakeRobotContext final : public RobotContext {
+ public:
+  struct Sent {
+    RobotId destination;
+    std::vector<std::byte> payload;
+    SimTime at;
+  };
+
+  // Sensors: set by the test.
+  RobotId robot_id = 0;
+  std::size_t robots = 1;
+  SimTime time{};
+  double step_length_s = 0.1;
+  Vec2 pose_position = Vec2::Zero();
+  double pose_heading_rad = 0.0;
+  double max_speed = 1.0;
+  double range_m = 1.0;
+  std::vector<double> rays = std::vector<double>(24, 1.0);
+  std::vector<ReceivedMessage> received;
+  // Actuators: read by the test.
+  double left_mps = 0.0;
+  double right_mps = 0.0;
+  std::vector<Sent> sent;
+  std::map<std::string, std::vector<double>, std::less<>> recorded;  // metric -> observations
+
+  [[nodiscard]] RobotId id() const override { return robot_id; }
+  [[nodiscard]] std::size_t robot_count() const override { return robots; }
+  [[nodiscard]] SimTime now() const override { return time; }
+  [[nodiscard]] double step_s() const override { return step_length_s; }
+  [[nodiscard]] Vec2 position() const override { return pose_position; }
+  [[nodiscard]] double heading_rad() const override { return pose_heading_rad; }
+  [[nodiscard]] double max_speed_mps() const override { return max_speed; }
+  [[nodiscard]] std::span<const double> proximity() const override { return rays; }
+  [[nodiscard]] double proximity_range_m() const override { return range_m; }
+  [[nodiscard]] std::span<const ReceivedMessage> inbox() const override { return received; }
+  void set_wheel_speeds(double left, double right) override {
+    left_mps = std::clamp(left, -max_speed, max_speed);
+    right_mps = std::clamp(right, -max_speed, max_speed);
+  }
+  std::uint64_t send(RobotId destination, std::span<const std::byte> payload) override {
+    if (payload.size() > kMaxPayloadBytes) {
+      throw std::invalid_argument("payload of " + std::to_string(payload.size()) +
+                                  " bytes exceeds kMaxPayloadBytes");
+    }
+    sent.push_back({destination, {payload.begin(), payload.end()}, time});
+    return sent.size() - 1;
+  }
+  void record(std::string_view metric, double value) override {
+    auto it = recorded.find(metric);
+    if (it == recorded.end())
+      it = recorded.emplace(std::string(metric), std::vector<double>{}).first;
+    it->second.push_back(value);
+  }
+
+  // Every ray clear.
+  void clear_rays() { std::fill(rays.begin(), rays.end(), range_m); }
+  // One step of a differential drive with axle `axle_m` under the current wheel speeds: the
+  // heading turns, the position moves along the mean heading, the clock advances.
+  void advance(double axle_m = 0.14) {  // 0.14 m: a foot-bot's axle
+    const double v = 0.5 * (left_mps + right_mps);
+    const double turn = (right_mps - left_mps) / axle_m * step_length_s;
+    const double mid = pose_heading_rad + 0.5 * turn;
+    pose_position += Vec2(std::cos(mid), std::sin(mid)) * v * step_length_s;
+    pose_heading_rad = std::remainder(pose_heading_rad + turn, 2.0 * std::numbers::pi);
+    time += from_seconds(step_length_s);
+  }
+};
+
+}  // namespace swarmnet::testing
