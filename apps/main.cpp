@@ -63,6 +63,7 @@ swarmnet::Scenario load(const ScenarioArguments& args) {
 struct TransportArguments {
   std::string kind = "shm";
   std::string remote;
+  std::string token_file;
   double step_timeout_s = 60.0;
 };
 
@@ -79,6 +80,7 @@ int run_command(ScenarioArguments args, bool quiet, const TransportArguments& tr
     options.progress = quiet ? nullptr : stderr;
     options.link.kind = *swarmnet::parse_transport_kind(transport.kind);
     options.link.remote = transport.remote;
+    options.link.token_file = transport.token_file;
     options.link.step_timeout =
         std::chrono::milliseconds(std::llround(transport.step_timeout_s * 1e3));
     swarmnet::install_stop_handlers();
@@ -142,6 +144,9 @@ static int run_main(int argc, char** argv) {
       ->capture_default_str();
   run->add_option("--net", transport.remote,
                   "use a network half started with 'swarmnet net --listen' (tcp://HOST:PORT)");
+  run->add_option("--token-file", transport.token_file,
+                  "with --net: the token the network half was started with (default: "
+                  "$SWARMNET_NET_TOKEN_FILE)");
   run->add_option("--step-timeout", transport.step_timeout_s,
                   "seconds to wait for the other half before declaring it hung")
       ->check(CLI::PositiveNumber)
@@ -156,12 +161,32 @@ static int run_main(int argc, char** argv) {
   source->add_option("--shm", net_options.shm, "shared-memory segment to attach to");
   source->add_option("--uds", net_options.uds, "Unix socket to connect to");
   source->add_option("--tcp", net_options.tcp, "HOST:PORT to connect to");
-  source->add_option("--listen", net_options.listen, "accept one robot half on HOST:PORT");
+  source->add_option("--listen", net_options.listen,
+                     "serve robot halves on [HOST:]PORT (HOST defaults to 127.0.0.1)");
   source->require_option(1);
   net->add_option("--parent", net_options.parent, "stop when this process is gone");
   net->add_option("--step-timeout-ms", net_timeout_ms, "milliseconds to wait for the robot half")
       ->check(CLI::PositiveNumber);
-  net->add_option("--out", net_out, "with --listen: directory for the network half's outputs");
+  net->add_option("--out", net_out,
+                  "with --listen: directory for the runs served (run-NNNN each; default "
+                  "$XDG_STATE_HOME/swarmnet/net or ~/.local/state/swarmnet/net)");
+  net->add_option("--token-file", net_options.token_file,
+                  "with --listen: a private file whose contents robot halves must prove they "
+                  "know (default: $SWARMNET_NET_TOKEN_FILE; required)");
+  std::vector<std::string> net_plugin_paths;
+  net->add_option("--plugin-path", net_plugin_paths,
+                  "with --listen: a plugin directory searched first (repeatable); a robot half's "
+                  "plugin_paths are never used");
+  net->add_option("--runs", net_options.runs, "with --listen: runs to serve, then exit")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  net->add_flag("--serve-forever", net_options.serve_forever,
+                "with --listen: serve runs until stopped (SIGINT/SIGTERM)");
+  double handshake_timeout_s = 5.0;
+  net->add_option("--handshake-timeout", handshake_timeout_s,
+                  "with --listen: seconds a connecting peer has to authenticate and say hello")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
 
   ScenarioArguments validate_args;
   auto* validate = app.add_subcommand("validate", "check a scenario without running it");
@@ -245,6 +270,10 @@ static int run_main(int argc, char** argv) {
   if (*net) {
     net_options.step_timeout = std::chrono::milliseconds(std::llround(net_timeout_ms));
     net_options.out = net_out;
+    net_options.plugin_paths.assign(net_plugin_paths.begin(), net_plugin_paths.end());
+    net_options.handshake_timeout =
+        std::chrono::milliseconds(std::llround(handshake_timeout_s * 1e3));
+    if (!net_options.listen.empty()) swarmnet::install_stop_handlers();
     return swarmnet::run_network_process(net_options);
   }
   if (*validate) return validate_command(validate_args);

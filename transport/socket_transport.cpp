@@ -51,7 +51,8 @@ IoStatus SocketTransport::wait_for(short events) {
     if (ready > 0) return IoStatus::ok;
     if (ready < 0 && errno != EINTR) return IoStatus::closed;
     if (policy_.peer_alive && !policy_.peer_alive()) return IoStatus::peer_dead;
-    if (std::chrono::steady_clock::now() >= deadline) return IoStatus::timeout;
+    const auto now = std::chrono::steady_clock::now();
+    if (now >= deadline || now >= deadline_) return IoStatus::timeout;
   }
 }
 
@@ -135,6 +136,7 @@ IoStatus SocketTransport::fill(std::size_t bytes) {
     if (n == 0) return in_end_ == 0 ? IoStatus::closed : IoStatus::corrupt;
     if (errno == EINTR) continue;
     if (errno == EAGAIN || errno == EWOULDBLOCK) {
+      if (std::chrono::steady_clock::now() >= deadline_) return IoStatus::timeout;
       if (const IoStatus s = wait_for(POLLIN); s != IoStatus::ok) return s;
       continue;
     }
@@ -147,7 +149,7 @@ IoStatus SocketTransport::receive_view(std::span<const std::byte>& record) {
   if (const IoStatus s = fill(kLengthBytes); s != IoStatus::ok) return s;
   std::uint32_t length = 0;
   std::memcpy(&length, in_.data() + in_start_, kLengthBytes);
-  if (length > kMaxRecordBytes) return IoStatus::corrupt;
+  if (length > max_record_bytes_) return IoStatus::corrupt;
   if (const IoStatus s = fill(kLengthBytes + length); s != IoStatus::ok) {
     return s == IoStatus::closed ? IoStatus::corrupt : s;  // cut off inside a record
   }
@@ -274,32 +276,49 @@ int connect_tcp(const std::string& host, std::uint16_t port) {
   return fd;
 }
 
-int accept_one(int listener, const WaitPolicy& policy, const std::string& what) {
+int accept_next(int listener, const WaitPolicy& policy, const std::string& what,
+                std::string* peer) {
   const auto deadline = std::chrono::steady_clock::now() + policy.timeout;
   for (;;) {
     pollfd p{listener, POLLIN, 0};
     const int ready = ::poll(&p, 1, 100);
     if (ready > 0) break;
     if (policy.peer_alive && !policy.peer_alive()) {
-      ::close(listener);
       throw TransportError("the peer died before connecting to " + what);
     }
     if (std::chrono::steady_clock::now() >= deadline) {
-      ::close(listener);
       throw TransportError("no connection on " + what + " within the timeout");
     }
   }
-  const int fd = ::accept4(listener, nullptr, nullptr, SOCK_CLOEXEC);
-  const std::string error = system_error();
-  ::close(listener);
-  if (fd < 0) throw TransportError("cannot accept a connection on " + what + ": " + error);
-  sockaddr_storage address{};
-  socklen_t size = sizeof address;
-  if (::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &size) == 0 &&
-      address.ss_family != AF_UNIX) {
-    set_no_delay(fd);
+  sockaddr_storage remote{};
+  socklen_t remote_size = sizeof remote;
+  const int fd =
+      ::accept4(listener, reinterpret_cast<sockaddr*>(&remote), &remote_size, SOCK_CLOEXEC);
+  if (fd < 0) throw TransportError("cannot accept a connection on " + what + ": " + system_error());
+  if (remote.ss_family != AF_UNIX) set_no_delay(fd);
+  if (peer != nullptr) {
+    char host[NI_MAXHOST] = "?";
+    char port[NI_MAXSERV] = "?";
+    if (remote.ss_family == AF_UNIX ||
+        ::getnameinfo(reinterpret_cast<sockaddr*>(&remote), remote_size, host, sizeof host, port,
+                      sizeof port, NI_NUMERICHOST | NI_NUMERICSERV) != 0) {
+      *peer = what;
+    } else {
+      *peer = std::string(host) + ":" + port;
+    }
   }
   return fd;
+}
+
+int accept_one(int listener, const WaitPolicy& policy, const std::string& what) {
+  try {
+    const int fd = accept_next(listener, policy, what);
+    ::close(listener);
+    return fd;
+  } catch (...) {
+    ::close(listener);
+    throw;
+  }
 }
 
 }  // namespace swarmnet

@@ -4,6 +4,7 @@
 // they lie in the receive buffer.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -28,8 +29,16 @@ class SocketTransport final : public Transport {
   void close() override;
   [[nodiscard]] std::string describe() const override { return description_; }
 
-  // Largest record accepted from the peer; a longer announced length is corrupt framing.
+  // Largest record accepted from the peer by default; a longer announced length is corrupt
+  // framing.
   static constexpr std::uint32_t kMaxRecordBytes = 1U << 26U;
+
+  // A server meeting an unknown peer narrows what it accepts until the peer is known: a smaller
+  // largest record (nothing longer is buffered), and an absolute deadline by which every receive
+  // must have completed (a peer that trickles bytes cannot hold it). Then it widens them again.
+  void set_max_record_bytes(std::uint32_t bytes) { max_record_bytes_ = bytes; }
+  void set_deadline(std::chrono::steady_clock::time_point deadline) { deadline_ = deadline; }
+  void clear_deadline() { deadline_ = std::chrono::steady_clock::time_point::max(); }
 
  private:
   IoStatus wait_for(short events);
@@ -50,6 +59,8 @@ class SocketTransport final : public Transport {
   std::size_t in_start_ = 0;
   std::size_t in_end_ = 0;
   bool write_closed_ = false;
+  std::uint32_t max_record_bytes_ = kMaxRecordBytes;
+  std::chrono::steady_clock::time_point deadline_ = std::chrono::steady_clock::time_point::max();
 };
 
 // Connection set-up; each throws TransportError naming the address and the system's reason.
@@ -59,5 +70,9 @@ int listen_tcp(const std::string& host, std::uint16_t port, std::uint16_t* bound
 int connect_tcp(const std::string& host, std::uint16_t port);
 // Waits up to `policy.timeout` for one connection on `listener`, then closes the listener.
 int accept_one(int listener, const WaitPolicy& policy, const std::string& what);
+// Waits up to `policy.timeout` for the next connection on `listener`, which stays open; fills
+// `peer` with the peer's address ("127.0.0.1:40112") when given.
+int accept_next(int listener, const WaitPolicy& policy, const std::string& what,
+                std::string* peer = nullptr);
 
 }  // namespace swarmnet

@@ -89,6 +89,8 @@ void serve(Transport& transport, Service service) {
   std::vector<std::byte> record;
   if (service == Service::step) {
     StepChannel channel(transport, "the benchmark");
+    Hello hello;
+    if (!channel.receive_hello(hello).ok() || !channel.send_welcome(hello).ok()) return;
     StepBatch batch;
     StepResult result;
     bool finished = false;
@@ -215,6 +217,13 @@ void StepExchange(benchmark::State& state, Kind kind) {
   const auto robots = static_cast<std::uint32_t>(state.range(0));
   Peer peer(kind, Service::step);
   StepChannel channel(peer.transport(), "the benchmark peer");
+  Hello hello;
+  hello.robots = robots;
+  hello.step_ns = 100'000'000;
+  if (!channel.send_hello(hello).ok() || !channel.receive_welcome(hello).ok()) {
+    state.SkipWithError("handshake failed");
+    return;
+  }
   StepBatch batch = make_batch(robots);
   StepResult result;
   for (auto _ : state) {
@@ -233,6 +242,10 @@ void StepCodec(benchmark::State& state) {
   InprocChannel link(kRingBytes, bench_policy());
   StepChannel robot(link.robot_end(), "the network end");
   StepChannel network(link.network_end(), "the robot end");
+  Hello hello;
+  hello.robots = robots;
+  robot.fix_limits(hello);
+  network.fix_limits(hello);
   StepBatch batch = make_batch(robots);
   StepResult result = make_result(batch);
   StepBatch received_batch;

@@ -1,6 +1,8 @@
 // Runs the built `swarmnet` command as a user would, capturing its exit code and output.
 #pragma once
 
+#include <fcntl.h>
+#include <spawn.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -10,6 +12,9 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
+
+extern char** environ;
 
 namespace swarmnet::testing {
 
@@ -35,6 +40,26 @@ inline CommandResult run_swarmnet(const std::string& arguments) {
   const int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+// Starts `swarmnet ARGUMENTS...` in the background, its stdout and stderr into `log` and its
+// stdin from /dev/null; returns its pid (the caller reaps it).
+inline pid_t spawn_swarmnet(const std::vector<std::string>& arguments,
+                            const std::filesystem::path& log) {
+  std::vector<std::string> args = {swarmnet_binary()};
+  args.insert(args.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  pid_t pid = -1;
+  posix_spawn(&pid, args[0].c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  return pid;
 }
 
 inline std::string read_file(const std::filesystem::path& path) {

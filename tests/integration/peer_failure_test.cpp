@@ -17,8 +17,6 @@
 
 #include "command_runner.hpp"
 
-extern char** environ;
-
 namespace swarmnet::testing {
 namespace {
 
@@ -30,8 +28,7 @@ class BackgroundRun {
  public:
   BackgroundRun(const TempDir& dir, const std::vector<std::string>& extra)
       : log_(dir.path() / "out.txt") {
-    std::vector<std::string> args = {swarmnet_binary(),
-                                     "run",
+    std::vector<std::string> args = {"run",
                                      std::string(SWARMNET_SOURCE_DIR) + "/configs/quickstart.yaml",
                                      "--quiet",
                                      "--set",
@@ -39,15 +36,7 @@ class BackgroundRun {
                                      "--out",
                                      (dir.path() / "run").string()};
     args.insert(args.end(), extra.begin(), extra.end());
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-    posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    posix_spawn(&pid_, args[0].c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
+    pid_ = spawn_swarmnet(args, log_);
   }
   ~BackgroundRun() {
     if (!reaped_) {

@@ -34,10 +34,19 @@ StepBatch sample_batch(std::uint32_t robots, std::uint32_t messages) {
   return batch;
 }
 
+// Both ends as after a handshake for `robots` robots (the limits every count is checked against).
+void shake_hands(StepChannel& robot, StepChannel& network, std::uint32_t robots) {
+  Hello hello;
+  hello.robots = robots;
+  robot.fix_limits(hello);
+  network.fix_limits(hello);
+}
+
 TEST(StepChannel, BatchRoundTripsAcrossChunks) {
   InprocChannel link(std::uint64_t{1} << 20);
   StepChannel robot(link.robot_end(), "the network half");
   StepChannel network(link.network_end(), "the robot half");
+  shake_hands(robot, network, 2500);
   const StepBatch sent = sample_batch(2500, 20);  // three positions records
   ASSERT_TRUE(robot.send_batch(sent).ok());
   StepBatch got;
@@ -66,6 +75,13 @@ TEST(StepChannel, ResultAndReportRoundTrip) {
   InprocChannel link(std::uint64_t{1} << 16);
   StepChannel robot(link.robot_end(), "the network half");
   StepChannel network(link.network_end(), "the robot half");
+  // The robot half sent five unicast messages, so five deliveries may come back.
+  shake_hands(robot, network, 10);
+  StepBatch batch = sample_batch(10, 0);
+  for (std::uint32_t i = 0; i < 5; ++i) batch.messages.push_back({i, 1, 2, {}});
+  ASSERT_TRUE(robot.send_batch(batch).ok());
+  bool finished = false;
+  ASSERT_TRUE(network.receive_batch(batch, finished).ok());
   StepResult sent;
   sent.step = 3;
   sent.events = 12345;
@@ -246,6 +262,98 @@ TEST(StepChannel, WelcomeThatDisagreesIsRefused) {
   ASSERT_TRUE(network.send_welcome(other).ok());
   const auto r = robot.receive_welcome(sent);
   EXPECT_NE(r.error.find("handshake mismatch"), std::string::npos) << r.error;
+}
+
+}  // namespace
+}  // namespace swarmnet
+
+namespace swarmnet {
+namespace {
+
+// Counts read from the peer are checked against what the handshake fixed before anything is
+// allocated for them (issue 12, part 2).
+class StepChannelBounds : public ::testing::Test {
+ protected:
+  StepChannelBounds() : link_(std::uint64_t{1} << 16, impatient()) {}
+  static WaitPolicy impatient() {
+    WaitPolicy policy;
+    policy.timeout = std::chrono::seconds(5);
+    return policy;
+  }
+  void feed(const std::vector<std::byte>& record) {
+    ASSERT_EQ(link_.robot_end().send(record), IoStatus::ok);
+    ASSERT_EQ(link_.robot_end().flush(), IoStatus::ok);
+  }
+  InprocChannel link_;
+  StepChannel network_{link_.network_end(), "the robot half"};
+  StepChannel robot_{link_.robot_end(), "the network half"};
+};
+
+TEST_F(StepChannelBounds, AStepBeginAnnouncingMillionsOfMessagesIsRefusedBeforeAllocating) {
+  Hello hello;
+  hello.robots = 10;
+  network_.fix_limits(hello);
+  feed(encode(RecordType::step_begin, std::uint64_t{0}, std::int64_t{0}, std::uint32_t{10},
+              std::uint32_t{25'000'000}));
+  StepBatch batch;
+  bool finished = false;
+  const ProtocolResult r = network_.receive_batch(batch, finished);
+  EXPECT_EQ(r.io, IoStatus::corrupt);
+  EXPECT_NE(r.error.find("25000000 messages in step_begin; at most 640"), std::string::npos)
+      << r.error;
+  EXPECT_EQ(batch.messages.capacity(), 0U);
+}
+
+TEST_F(StepChannelBounds, AStepBeginWithAnotherSwarmSizeOrBeforeTheHandshakeIsRefused) {
+  StepBatch batch;
+  bool finished = false;
+  feed(encode(RecordType::step_begin, std::uint64_t{0}, std::int64_t{0}, std::uint32_t{4},
+              std::uint32_t{0}));
+  ProtocolResult r = network_.receive_batch(batch, finished);
+  EXPECT_NE(r.error.find("before the handshake"), std::string::npos) << r.error;
+  Hello hello;
+  hello.robots = 10;
+  network_.fix_limits(hello);
+  feed(encode(RecordType::step_begin, std::uint64_t{0}, std::int64_t{0}, std::uint32_t{0xFFFFFFFF},
+              std::uint32_t{0}));
+  r = network_.receive_batch(batch, finished);
+  EXPECT_NE(r.error.find("announced 4294967295 robots in step_begin; the handshake fixed 10"),
+            std::string::npos)
+      << r.error;
+  EXPECT_EQ(batch.positions.capacity(), 0U);
+}
+
+TEST_F(StepChannelBounds, AHelloWithAnImpossibleSwarmIsRefused) {
+  Hello hello;
+  hello.robots = 0xFFFFFFFF;
+  hello.step_ns = 100'000'000;
+  ASSERT_TRUE(robot_.send_hello(hello).ok());
+  Hello got;
+  const ProtocolResult r = network_.receive_hello(got);
+  EXPECT_EQ(r.io, IoStatus::corrupt);
+  EXPECT_NE(r.error.find("4294967295 robots in hello"), std::string::npos) << r.error;
+}
+
+TEST_F(StepChannelBounds, DeliveriesBeyondWhatTheSentMessagesCanProduceAreRefused) {
+  Hello hello;
+  hello.robots = 4;
+  robot_.fix_limits(hello);
+  network_.fix_limits(hello);
+  StepBatch batch = sample_batch(4, 0);
+  batch.messages.push_back({1, 0, 2, {}});  // one unicast message: at most one delivery
+  ASSERT_TRUE(robot_.send_batch(batch).ok());
+  bool finished = false;
+  ASSERT_TRUE(network_.receive_batch(batch, finished).ok());
+  StepResult result;
+  for (int i = 0; i < 3; ++i) result.deliveries.push_back({1, 0, 2, 2, {}, {}, 1, {}});
+  ASSERT_TRUE(network_.send_result(result).ok());
+  StepResult got;
+  const ProtocolResult r = robot_.receive_result(got);
+  EXPECT_EQ(r.io, IoStatus::corrupt);
+  EXPECT_NE(r.error.find("more deliveries than the messages it was given can produce"),
+            std::string::npos)
+      << r.error;
+  EXPECT_LE(got.deliveries.size(), 1U);
 }
 
 }  // namespace

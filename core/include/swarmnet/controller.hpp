@@ -47,7 +47,8 @@ class RobotContext {
   // Actuators. Wheel speeds are clamped to +/- max_speed_mps().
   virtual void set_wheel_speeds(double left_mps, double right_mps) = 0;
   // Sends a message to one robot, or to kBroadcast. Returns its message id. A payload larger than
-  // kMaxPayloadBytes is refused with std::invalid_argument.
+  // kMaxPayloadBytes is refused with std::invalid_argument; a message beyond the swarm's
+  // kMaxMessagesPerRobotStep x robots in one step with std::length_error.
   virtual std::uint64_t send(RobotId destination, std::span<const std::byte> payload) = 0;
 
   // Adds one observation of a named metric; summary.json reports count, sum, mean, min and max.

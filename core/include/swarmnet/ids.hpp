@@ -17,4 +17,8 @@ inline constexpr NodeId kNoNode = kBroadcast - 1;
 // routing and MAC headers inside an 802.11 MSDU (2304 bytes).
 inline constexpr std::uint32_t kMaxPayloadBytes = 2048;
 
+// Messages the swarm may send in one step, per robot in the swarm (so 64 x robots in all): a
+// bound the network half checks before it allocates anything for a step's batch.
+inline constexpr std::uint32_t kMaxMessagesPerRobotStep = 64;
+
 }  // namespace swarmnet

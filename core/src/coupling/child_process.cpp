@@ -13,7 +13,8 @@
 
 namespace swarmnet {
 
-ChildProcess::ChildProcess(const std::vector<std::string>& arguments) {
+ChildProcess::ChildProcess(const std::vector<std::string>& arguments,
+                           const std::vector<std::string>& environment) {
   const std::string executable = "/proc/self/exe";
   std::vector<char*> argv;
   std::string program = "swarmnet";
@@ -21,7 +22,12 @@ ChildProcess::ChildProcess(const std::vector<std::string>& arguments) {
   std::vector<std::string> copies = arguments;
   for (auto& argument : copies) argv.push_back(argument.data());
   argv.push_back(nullptr);
-  const int rc = posix_spawn(&pid_, executable.c_str(), nullptr, nullptr, argv.data(), environ);
+  std::vector<std::string> added = environment;
+  std::vector<char*> envp;
+  for (char** e = environ; *e != nullptr; ++e) envp.push_back(*e);
+  for (auto& entry : added) envp.push_back(entry.data());
+  envp.push_back(nullptr);
+  const int rc = posix_spawn(&pid_, executable.c_str(), nullptr, nullptr, argv.data(), envp.data());
   if (rc != 0) throw RunError(std::string("cannot start the network half: ") + std::strerror(rc));
 }
 

@@ -12,8 +12,11 @@ namespace swarmnet {
 
 class ChildProcess {
  public:
-  // Runs this executable (/proc/self/exe) with `arguments`. Throws RunError.
-  explicit ChildProcess(const std::vector<std::string>& arguments);
+  // Runs this executable (/proc/self/exe) with `arguments`, its environment this process's plus
+  // `environment` ("NAME=value" entries; a secret handed over there is readable by this user
+  // only, unlike the arguments). Throws RunError.
+  explicit ChildProcess(const std::vector<std::string>& arguments,
+                        const std::vector<std::string>& environment = {});
   ChildProcess(const ChildProcess&) = delete;
   ChildProcess& operator=(const ChildProcess&) = delete;
   ChildProcess(ChildProcess&&) = delete;

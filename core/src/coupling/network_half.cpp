@@ -70,6 +70,11 @@ void serve_network_connection(StepChannel& channel,
     const ProtocolResult received = channel.receive_hello(hello);
     if (!received.ok()) throw RunError(received.error);
     accepted.emplace(setup(hello));
+    if (accepted->scenario.robots.count != hello.robots) {
+      throw RunError("the hello announces " + std::to_string(hello.robots) +
+                     " robots but its scenario has " +
+                     std::to_string(accepted->scenario.robots.count));
+    }
     Hello answer = hello;
     answer.seed = accepted->scenario.seed;
     answer.robots = accepted->scenario.robots.count;

@@ -7,6 +7,7 @@
 
 #include "coupling/child_process.hpp"
 #include "coupling/network_half.hpp"
+#include "coupling/peer_authentication.hpp"
 #include "coupling/stop_signal.hpp"
 #include "inproc_channel.hpp"
 #include "outputs/run_error.hpp"
@@ -184,6 +185,19 @@ class PrivateDirectory {
   std::filesystem::path path_;
 };
 
+// A socket child learns this run's one-time secret from its environment, which only this user
+// can read; whoever connects must prove it knows it (another local user could connect first).
+std::vector<std::string> child_environment(const PeerSecret& secret) {
+  return {std::string(kChildSecretVariable) + "=" + secret.hex()};
+}
+
+void check_child(Transport& transport, const PeerSecret& secret, const std::string& address) {
+  if (std::string why = authenticate_connector(transport, secret); !why.empty()) {
+    throw RunError("the process that connected to " + address +
+                   " is not the network half this run started: " + why);
+  }
+}
+
 }  // namespace
 
 std::pair<std::string, std::uint16_t> parse_host_port(const std::string& text) {
@@ -199,8 +213,17 @@ std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario,
       throw RunError("--net takes tcp://HOST:PORT, not '" + options.remote + "'");
     }
     const auto [host, port] = split_host_port(options.remote.substr(prefix.size()));
+    const std::filesystem::path token = token_file_from(options.token_file);
+    if (token.empty()) {
+      throw RunError(std::string("--net needs the token the network half was started with: ") +
+                     "--token-file FILE or " + kTokenFileVariable + " (docs/security.md)");
+    }
+    const PeerSecret secret = PeerSecret::from_file(token);
     auto transport =
         std::make_unique<SocketTransport>(connect_tcp(host, port), policy_with(options, {}), "TCP");
+    if (std::string why = authenticate_to_acceptor(*transport, secret); !why.empty()) {
+      throw RunError(options.remote + ": " + why);
+    }
     return std::make_unique<RemoteLink>(std::move(transport), "TCP to " + options.remote);
   }
   switch (options.kind) {
@@ -223,11 +246,14 @@ std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario,
       PrivateDirectory directory;
       const std::string path = (directory.path() / "network.sock").string();
       const int listener = listen_unix(path);
-      auto child = std::make_unique<ChildProcess>(child_arguments(options, "--uds", path));
+      const PeerSecret secret = PeerSecret::random();
+      auto child = std::make_unique<ChildProcess>(child_arguments(options, "--uds", path),
+                                                  child_environment(secret));
       ChildProcess* watched = child.get();
       const WaitPolicy policy = policy_with(options, [watched] { return watched->alive(); });
       const int fd = accept_one(listener, policy, "Unix socket " + path);
       auto transport = std::make_unique<SocketTransport>(fd, policy, "Unix-domain socket");
+      check_child(*transport, secret, path);
       return std::make_unique<ChildLink>(std::move(child), std::move(transport), nullptr,
                                          "Unix-domain socket");
     }
@@ -235,11 +261,14 @@ std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario,
       std::uint16_t port = 0;
       const int listener = listen_tcp("127.0.0.1", 0, &port);
       const std::string address = "127.0.0.1:" + std::to_string(port);
-      auto child = std::make_unique<ChildProcess>(child_arguments(options, "--tcp", address));
+      const PeerSecret secret = PeerSecret::random();
+      auto child = std::make_unique<ChildProcess>(child_arguments(options, "--tcp", address),
+                                                  child_environment(secret));
       ChildProcess* watched = child.get();
       const WaitPolicy policy = policy_with(options, [watched] { return watched->alive(); });
       const int fd = accept_one(listener, policy, "TCP " + address);
       auto transport = std::make_unique<SocketTransport>(fd, policy, "TCP loopback");
+      check_child(*transport, secret, address);
       return std::make_unique<ChildLink>(std::move(child), std::move(transport), nullptr,
                                          "TCP loopback " + address);
     }

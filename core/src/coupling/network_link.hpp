@@ -26,7 +26,8 @@ std::optional<TransportKind> parse_transport_kind(std::string_view text);
 
 struct LinkOptions {
   TransportKind kind = TransportKind::shm;
-  std::string remote;  // "tcp://HOST:PORT" of a listening network half; empty: spawn a child
+  std::string remote;      // "tcp://HOST:PORT" of a listening network half; empty: spawn a child
+  std::string token_file;  // with `remote`: the token it was started with (else from the env)
   std::chrono::milliseconds step_timeout{std::chrono::seconds(60)};
   std::uint64_t ring_bytes = std::uint64_t{1} << 22U;  // per direction, shm and inproc
 };

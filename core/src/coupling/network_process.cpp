@@ -2,13 +2,18 @@
 
 #include <signal.h>
 #include <sys/prctl.h>
+#include <sys/stat.h>
 #include <unistd.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 #include "coupling/network_half.hpp"
 #include "coupling/network_link.hpp"
+#include "coupling/peer_authentication.hpp"
+#include "coupling/stop_signal.hpp"
 #include "outputs/run_error.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "protocol/step_channel.hpp"
@@ -21,42 +26,51 @@ namespace swarmnet {
 
 namespace {
 
+// The largest record a server takes from a peer before the handshake is done: a hello with the
+// largest scenario text a record may carry.
+constexpr std::uint32_t kHandshakeRecordBytes = kMaxTextBytes + (1U << 16U);
+
+void say(const std::string& text) { std::fprintf(stderr, "swarmnet net: %s\n", text.c_str()); }
+
 struct Connection {
   std::unique_ptr<ShmSegment> segment;  // kept mapped for the transport's lifetime
   std::unique_ptr<Transport> transport;
 };
 
-Connection connect(const NetworkProcessOptions& options, const WaitPolicy& policy) {
+// The secret a robot half handed its child for a socket link.
+PeerSecret child_secret() {
+  const char* hex = std::getenv(kChildSecretVariable);
+  if (hex == nullptr) {
+    throw RunError(std::string("started without ") + kChildSecretVariable +
+                   ": a socket child is started by 'swarmnet run', which hands it the secret");
+  }
+  return PeerSecret::from_hex(hex);
+}
+
+// A child of `swarmnet run`: attach or connect to what the parent opened.
+Connection connect_child(const NetworkProcessOptions& options, const WaitPolicy& policy) {
   Connection c;
   if (!options.shm.empty()) {
     c.segment = ShmSegment::attach(options.shm);
     c.transport = std::make_unique<RingTransport>(
         c.segment->network_to_robot(), c.segment->robot_to_network(), policy, "shared memory");
-  } else if (!options.uds.empty()) {
+    return c;
+  }
+  const PeerSecret secret = child_secret();
+  if (!options.uds.empty()) {
     c.transport =
         std::make_unique<SocketTransport>(connect_unix(options.uds), policy, "Unix-domain socket");
-  } else if (!options.tcp.empty()) {
+  } else {
     const auto [host, port] = parse_host_port(options.tcp);
     c.transport = std::make_unique<SocketTransport>(connect_tcp(host, port), policy, "TCP");
-  } else if (!options.listen.empty()) {
-    const auto [host, port] = parse_host_port(options.listen);
-    std::uint16_t bound = 0;
-    const int listener = listen_tcp(host, port, &bound);
-    std::fprintf(stderr, "swarmnet net: waiting for a robot half on %s:%u\n", host.c_str(),
-                 static_cast<unsigned>(bound));
-    WaitPolicy patient = policy;
-    patient.timeout = std::chrono::hours(24 * 365);  // a server waits for its client
-    const int fd = accept_one(listener, patient, "TCP " + options.listen);
-    c.transport = std::make_unique<SocketTransport>(fd, policy, "TCP");
-  } else {
-    throw RunError("swarmnet net needs one of --shm, --uds, --tcp or --listen");
+  }
+  if (std::string why = authenticate_to_acceptor(*c.transport, secret); !why.empty()) {
+    throw RunError(why);
   }
   return c;
 }
 
-}  // namespace
-
-int run_network_process(const NetworkProcessOptions& options) {
+int serve_parent(const NetworkProcessOptions& options) {
   // Ctrl-C reaches the whole process group: the robot half decides when the run stops.
   if (options.parent != 0) {
     ::signal(SIGINT, SIG_IGN);
@@ -71,27 +85,179 @@ int run_network_process(const NetworkProcessOptions& options) {
   }
   Connection connection;
   try {
-    connection = connect(options, policy);
+    connection = connect_child(options, policy);
   } catch (const std::exception& error) {
-    std::fprintf(stderr, "swarmnet net: error: %s\n", error.what());
+    say(std::string("error: ") + error.what());
     return 1;
   }
   StepChannel channel(*connection.transport, "the robot half");
   try {
+    // The parent's own scenario, plugin paths and run directory: it started this process.
     serve_network_connection(channel, [&](const Hello& hello) {
       PluginLoader loader;
-      NetworkSetup setup{
+      return NetworkSetup{
           load_scenario_text(hello.scenario_yaml, "the robot half's scenario", loader),
-          options.out.empty() ? std::filesystem::path(hello.run_dir) : options.out};
-      if (!options.out.empty()) std::filesystem::create_directories(setup.run_dir);
-      return setup;
+          std::filesystem::path(hello.run_dir)};
     });
   } catch (const std::exception& error) {
-    // Already sent to the robot half; printed too when nobody started us to read it.
-    if (options.parent == 0) std::fprintf(stderr, "swarmnet net: error: %s\n", error.what());
+    // Already sent to the robot half, which reports it; printed too for anyone watching.
+    if (options.parent == 0) say(std::string("error: ") + error.what());
     return 1;
   }
   return 0;
+}
+
+// "[HOST:]PORT"; HOST defaults to loopback.
+std::pair<std::string, std::uint16_t> listen_address(const std::string& text) {
+  if (text.find(':') == std::string::npos) return parse_host_port("127.0.0.1:" + text);
+  return parse_host_port(text);
+}
+
+// A directory only this user may use: created 0700, or an existing one that is ours.
+void make_private_directory(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw RunError("cannot create " + dir.string() + ": " + ec.message());
+  struct stat info {};
+  if (::stat(dir.c_str(), &info) != 0 || !S_ISDIR(info.st_mode)) {
+    throw RunError(dir.string() + " is not a directory");
+  }
+  if (info.st_uid != ::geteuid()) throw RunError(dir.string() + " belongs to another user");
+}
+
+// OUT/run-NNNN, the first number not taken: named by the server, never by the peer.
+std::filesystem::path next_run_dir(const std::filesystem::path& out) {
+  for (unsigned n = 1;; ++n) {
+    char name[32];
+    std::snprintf(name, sizeof name, "run-%04u", n);
+    const std::filesystem::path dir = out / name;
+    if (::mkdir(dir.c_str(), 0700) == 0) return dir;
+    if (errno != EEXIST)
+      throw RunError("cannot create " + dir.string() + ": " + std::strerror(errno));
+  }
+}
+
+// `message` with every directory of this host that the peer has no business knowing replaced.
+std::string redact(std::string message, const std::vector<std::filesystem::path>& private_dirs) {
+  for (const auto& dir : private_dirs) {
+    const std::string text = dir.string();
+    if (text.empty() || text == "/") continue;
+    for (std::size_t at = message.find(text); at != std::string::npos;
+         at = message.find(text, at)) {
+      message.replace(at, text.size(), "<network half's host>");
+    }
+  }
+  return message;
+}
+
+// What a remote robot half's hello asks this server to simulate: its scenario without its
+// plugin_paths (code is loaded only from the server's own search path), in a run directory this
+// server names. Errors reach the peer with this host's paths redacted.
+NetworkSetup remote_setup(const Hello& hello, const NetworkProcessOptions& options,
+                          const std::filesystem::path& out) {
+  PluginLoader loader(options.plugin_paths);
+  std::vector<std::filesystem::path> private_dirs = loader.search_path();
+  private_dirs.push_back(out);
+  try {
+    YAML::Node tree = YAML::Load(hello.scenario_yaml);
+    if (tree.IsMap() && tree["plugin_paths"]) tree.remove("plugin_paths");
+    YAML::Emitter emitter;
+    emitter << tree;
+    NetworkSetup setup{load_scenario_text(emitter.c_str(), "the robot half's scenario", loader),
+                       next_run_dir(out)};
+    setup.scenario.plugin_paths = options.plugin_paths;
+    return setup;
+  } catch (const std::exception& error) {
+    say(std::string("refused a scenario: ") + error.what());
+    throw RunError(redact(error.what(), private_dirs));
+  }
+}
+
+int serve_remote(const NetworkProcessOptions& options) {
+  const std::filesystem::path token = token_file_from(options.token_file);
+  if (token.empty()) {
+    throw RunError(std::string("--listen needs a token that robot halves must prove they "
+                               "know: --token-file FILE or ") +
+                   kTokenFileVariable + " (docs/security.md)");
+  }
+  const PeerSecret secret = PeerSecret::from_file(token);
+  const std::filesystem::path out = options.out.empty() ? private_output_dir() : options.out;
+  make_private_directory(out);
+  const auto [host, port] = listen_address(options.listen);
+  std::uint16_t bound = 0;
+  const int listener = listen_tcp(host, port, &bound);
+  say("serving robot halves on " + host + ":" + std::to_string(bound) + ", runs in " +
+      out.string() +
+      (options.serve_forever ? ", until stopped"
+                             : ", " + std::to_string(options.runs) + " run(s)"));
+  WaitPolicy patient;
+  patient.timeout = std::chrono::hours(24 * 365);  // a server waits for its clients
+  patient.peer_alive = [] { return stop_signal() == 0; };
+  WaitPolicy policy;
+  policy.timeout = options.step_timeout;
+  policy.peer_alive = [] { return stop_signal() == 0; };
+
+  int status = 0;
+  for (std::uint32_t served = 0; options.serve_forever || served < options.runs;) {
+    std::string peer;
+    int fd = -1;
+    try {
+      fd = accept_next(listener, patient, "TCP " + host + ":" + std::to_string(bound), &peer);
+    } catch (const std::exception& error) {
+      if (stop_signal() != 0) break;
+      ::close(listener);
+      throw;
+    }
+    SocketTransport transport(fd, policy, "TCP from " + peer);
+    // Until the peer has authenticated and its hello is read: small records, a short deadline.
+    transport.set_max_record_bytes(kHandshakeRecordBytes);
+    transport.set_deadline(std::chrono::steady_clock::now() + options.handshake_timeout);
+    if (std::string why = authenticate_connector(transport, secret); !why.empty()) {
+      say("refused " + peer + ": " + why);
+      continue;
+    }
+    ++served;
+    StepChannel channel(transport, "the robot half at " + peer);
+    try {
+      serve_network_connection(channel, [&](const Hello& hello) {
+        transport.clear_deadline();
+        transport.set_max_record_bytes(SocketTransport::kMaxRecordBytes);
+        NetworkSetup setup = remote_setup(hello, options, out);
+        say("run " + setup.run_dir.filename().string() + " for " + peer + ": " +
+            std::to_string(setup.scenario.robots.count) + " robots");
+        return setup;
+      });
+      say("finished the run for " + peer);
+    } catch (const std::exception& error) {
+      say("the run for " + peer + " failed: " + error.what());
+      status = 1;
+    }
+  }
+  ::close(listener);
+  return status;
+}
+
+}  // namespace
+
+std::filesystem::path private_output_dir() {
+  if (const char* state = std::getenv("XDG_STATE_HOME"); state != nullptr && *state == '/') {
+    return std::filesystem::path(state) / "swarmnet" / "net";
+  }
+  const char* home = std::getenv("HOME");
+  if (home == nullptr || *home != '/') {
+    throw RunError("no --out given and neither XDG_STATE_HOME nor HOME is set");
+  }
+  return std::filesystem::path(home) / ".local" / "state" / "swarmnet" / "net";
+}
+
+int run_network_process(const NetworkProcessOptions& options) {
+  if (options.listen.empty()) return serve_parent(options);
+  try {
+    return serve_remote(options);
+  } catch (const std::exception& error) {
+    say(std::string("error: ") + error.what());
+    return 1;
+  }
 }
 
 }  // namespace swarmnet

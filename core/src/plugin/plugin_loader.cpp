@@ -104,6 +104,23 @@ std::shared_ptr<PluginLibrary> PluginLoader::find(const std::string& name, Plugi
   return library;
 }
 
+std::vector<std::string> PluginLoader::names_in_search_path() const {
+  std::set<std::string> names;
+  for (const auto& dir : search_path_) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec)) continue;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+      const std::string file = entry.path().filename().string();
+      if (file.size() > kFilePrefix.size() + kFileSuffix.size() && file.starts_with(kFilePrefix) &&
+          file.ends_with(kFileSuffix)) {
+        names.insert(
+            file.substr(kFilePrefix.size(), file.size() - kFilePrefix.size() - kFileSuffix.size()));
+      }
+    }
+  }
+  return {names.begin(), names.end()};
+}
+
 std::vector<std::shared_ptr<PluginLibrary>> PluginLoader::discover(
     std::vector<BrokenPlugin>* broken) {
   std::set<std::string> seen;

@@ -29,7 +29,9 @@ class PluginLoader {
   explicit PluginLoader(std::vector<std::filesystem::path> scenario_dirs = {});
 
   // Every directory searched, in order.
-  [[nodiscard]] const std::vector<std::filesystem::path>& search_path() const { return search_path_; }
+  [[nodiscard]] const std::vector<std::filesystem::path>& search_path() const {
+    return search_path_;
+  }
 
   // Puts `dirs` at the front of the search path, in the given order (a scenario's plugin_paths).
   // A directory already in the path moves to its new place rather than appearing twice. When the
@@ -46,9 +48,15 @@ class PluginLoader {
   PluginInstance<Interface> create(const std::string& name, const PluginArgs& args) {
     auto library = find(name, Interface::kKind);
     std::unique_ptr<Plugin> object = library->descriptor().create(args);
-    if (!object) throw PluginError("plugin '" + name + "' (" + library->path().string() + ") returned no object");
+    if (!object)
+      throw PluginError("plugin '" + name + "' (" + library->path().string() +
+                        ") returned no object");
     return PluginInstance<Interface>(std::move(library), std::move(object));
   }
+
+  // The plugin names the search path offers, from file names alone (swarmnet_NAME.so), in name
+  // order: nothing is opened, so no code of any library runs (for listing names in a message).
+  [[nodiscard]] std::vector<std::string> names_in_search_path() const;
 
   // Every plugin in the search path, the first of each name winning (as find() would choose),
   // ordered by kind then name; files that failed to open go to `broken`.

@@ -146,8 +146,16 @@ ProtocolResult StepChannel::receive_hello(Hello& hello) {
       !reader->at_end()) {
     return malformed(type);
   }
+  if (hello.robots == 0 || hello.robots > kMaxRobots) {
+    return over_limit("announced " + std::to_string(hello.robots) + " robots in hello; 1 to " +
+                      std::to_string(kMaxRobots) + " are allowed");
+  }
+  if (hello.step_ns <= 0) {
+    return over_limit("announced a step of " + std::to_string(hello.step_ns) + " ns in hello");
+  }
   hello.scenario_yaml = as_text(yaml);
   hello.run_dir = as_text(dir);
+  fix_limits(hello);
   return {};
 }
 
@@ -181,7 +189,18 @@ ProtocolResult StepChannel::receive_welcome(const Hello& sent) {
                 std::to_string(echo.step_ns) + " ns; asked for " + std::to_string(sent.robots) +
                 ", " + std::to_string(sent.seed) + ", " + std::to_string(sent.step_ns) + " ns"};
   }
+  fix_limits(sent);
   return {};
+}
+
+void StepChannel::fix_limits(const Hello& hello) {
+  limits_.robots = hello.robots;
+  limits_.max_messages_per_step = std::uint64_t{hello.robots} * kMaxMessagesPerRobotStep;
+  deliveries_owed_ = 0;
+}
+
+ProtocolResult StepChannel::over_limit(const std::string& what) const {
+  return {IoStatus::corrupt, "protocol error: " + peer_ + " " + what};
 }
 
 ProtocolResult StepChannel::send_batch(const StepBatch& batch) {
@@ -197,6 +216,7 @@ ProtocolResult StepChannel::send_batch(const StepBatch& batch) {
     if (auto r = send_positions(batch, first, count); !r.ok()) return r;
   }
   for (const AppMessage& message : batch.messages) {
+    deliveries_owed_ += message.destination == kBroadcast ? limits_.robots : 1U;
     if (auto r =
             send_record("message", false, RecordType::message, message.message_id, message.source,
                         message.destination, std::span<const std::byte>(message.payload));
@@ -223,6 +243,17 @@ ProtocolResult StepChannel::receive_batch(StepBatch& batch, bool& finished) {
   if (!reader->get(batch.step) || !reader->get(start_ns) || !reader->get(robots) ||
       !reader->get(messages) || !reader->at_end()) {
     return malformed(type);
+  }
+  if (limits_.robots == 0) return over_limit("sent a step before the handshake");
+  if (robots != limits_.robots) {
+    return over_limit("announced " + std::to_string(robots) + " robots in step_begin; the " +
+                      "handshake fixed " + std::to_string(limits_.robots));
+  }
+  if (messages > limits_.max_messages_per_step) {
+    return over_limit("announced " + std::to_string(messages) +
+                      " messages in step_begin; at most " +
+                      std::to_string(limits_.max_messages_per_step) + " (" +
+                      std::to_string(kMaxMessagesPerRobotStep) + " per robot) may come in a step");
   }
   batch.start = SimTime{start_ns};
   batch.positions.resize(robots);
@@ -289,6 +320,10 @@ ProtocolResult StepChannel::receive_result(StepResult& result) {
     RecordReader* reader = nullptr;
     if (auto r = receive(type, reader); !r.ok()) return r;
     if (type == RecordType::delivery) {
+      if (deliveries_owed_ == 0) {
+        return over_limit("sent more deliveries than the messages it was given can produce");
+      }
+      --deliveries_owed_;
       if (count_so_far == result.deliveries.size()) result.deliveries.emplace_back();
       Delivery& d = result.deliveries[count_so_far++];
       std::int64_t sent = 0;

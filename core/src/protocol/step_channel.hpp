@@ -35,6 +35,16 @@ enum class RecordType : std::uint32_t {
   welcome = 11,
 };
 
+// What the handshake fixes, so that every count a peer announces later is checked before
+// anything is allocated for it.
+struct ProtocolLimits {
+  std::uint32_t robots = 0;                 // positions per step, exactly
+  std::uint64_t max_messages_per_step = 0;  // robots x kMaxMessagesPerRobotStep
+};
+
+// The largest swarm a hello may announce (the scenario's own limit on robots.count).
+inline constexpr std::uint32_t kMaxRobots = 100000;
+
 // Version of the records above; both halves must speak the same one.
 inline constexpr std::uint32_t kStepProtocolVersion = 2;
 
@@ -70,6 +80,10 @@ class StepChannel {
   ProtocolResult receive_hello(Hello& hello);
   ProtocolResult send_welcome(const Hello& accepted);
 
+  // Both sides, after the handshake: the limits `hello` implies. Until then a batch or a
+  // result is refused.
+  void fix_limits(const Hello& hello);
+
   // Robot side.
   ProtocolResult send_batch(const StepBatch& batch);
   ProtocolResult receive_result(StepResult& result);
@@ -98,12 +112,17 @@ class StepChannel {
   ProtocolResult receive(RecordType& type, RecordReader*& reader);
   ProtocolResult malformed(RecordType type) const;
   ProtocolResult unexpected(RecordType got, const char* expected) const;
+  ProtocolResult over_limit(const std::string& what) const;
 
   Transport& transport_;
   std::string peer_;
   std::span<const std::byte> in_;  // the record being decoded, where it lies in the transport
   std::optional<RecordReader> reader_;
   bool peer_failed_ = false;
+  ProtocolLimits limits_;
+  // Deliveries the messages sent so far can still produce (one per unicast message, one per
+  // robot per broadcast): a network half that sends more is refused before it is buffered.
+  std::uint64_t deliveries_owed_ = 0;
 };
 
 }  // namespace swarmnet

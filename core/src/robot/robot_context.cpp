@@ -43,6 +43,12 @@ std::uint64_t WorldRobotContext::send(RobotId destination, std::span<const std::
     throw std::logic_error("robot " + std::to_string(id_) +
                            ": send() called outside init() and control_step()");
   }
+  if (state_->outbox->size() >= state_->bodies.size() * std::size_t{kMaxMessagesPerRobotStep}) {
+    throw std::length_error(
+        "robot " + std::to_string(id_) + ": the swarm already sent " +
+        std::to_string(state_->outbox->size()) + " messages in this step, the most it may (" +
+        std::to_string(kMaxMessagesPerRobotStep) + " per robot, kMaxMessagesPerRobotStep)");
+  }
   const std::uint64_t message_id = state_->next_message_id++;
   state_->outbox->push_back(
       AppMessage{message_id, id_, destination, Payload(payload.begin(), payload.end())});

@@ -281,7 +281,7 @@ std::optional<YAML::Node> ScenarioChecker::check_plugin(const KeySpec& spec,
     library = loader_.find(name, spec.plugin_kind);
   } catch (const PluginError& error) {
     problems_.add(plugin_path, plugin_mark, one_line(error.what()),
-                  "a " + kind + " plugin: " + available_plugins(spec.plugin_kind));
+                  "a " + kind + " plugin: " + available_plugins());
     return std::nullopt;
   }
 
@@ -388,14 +388,11 @@ std::vector<ScenarioChecker::Entry> ScenarioChecker::entries(
   return result;
 }
 
-std::string ScenarioChecker::available_plugins(PluginKind kind) {
-  if (!discovered_) discovered_ = loader_.discover(nullptr);
-  std::vector<std::string> names;
-  for (const auto& library : *discovered_) {
-    if (library->kind() == kind) names.push_back(library->info().name);
-  }
+std::string ScenarioChecker::available_plugins() const {
+  // Names from file names only: listing them must not run any library's code.
+  const std::vector<std::string> names = loader_.names_in_search_path();
   if (names.empty()) return "none is in the search path";
-  return join(names, ", ") + " (see `swarmnet plugins`)";
+  return "the search path has " + join(names, ", ") + " (`swarmnet plugins` tells their kinds)";
 }
 
 }  // namespace swarmnet

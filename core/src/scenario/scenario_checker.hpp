@@ -65,7 +65,7 @@ class ScenarioChecker {
                              const std::string& known_hint,
                              const std::string& none_known = "no keys here");
   // The plugins of `kind` in the search path, for "expected one of" after a failed lookup.
-  std::string available_plugins(PluginKind kind);
+  [[nodiscard]] std::string available_plugins() const;
 
   void remember(const Where& where) { marks_[where.path.text()] = where.mark; }
 
@@ -74,7 +74,6 @@ class ScenarioChecker {
   std::filesystem::path base_dir_;
   std::map<std::string, PluginChoice> plugins_;
   std::map<std::string, YAML::Mark> marks_;
-  std::optional<std::vector<std::shared_ptr<PluginLibrary>>> discovered_;
 };
 
 }  // namespace swarmnet

@@ -1,0 +1,247 @@
+// A network half started with --listen trusts no peer (issue 12, part 1): it serves only peers
+// that prove they know its token, never loads code from a peer's plugin_paths, never writes
+// where a peer says, drops a silent peer after the handshake deadline and serves the next.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
+
+#include <chrono>
+#include <fstream>
+#include <regex>
+#include <thread>
+
+#include "command_runner.hpp"
+#include "coupling/peer_authentication.hpp"
+#include "protocol/step_channel.hpp"
+#include "socket_transport.hpp"
+
+namespace swarmnet::testing {
+namespace {
+
+void write_token(const std::filesystem::path& path, const std::string& text, unsigned mode) {
+  std::ofstream(path) << text << "\n";
+  ::chmod(path.c_str(), mode);
+}
+
+// `swarmnet net --listen 127.0.0.1:0 ...` in the background; its port read from its log.
+class Server {
+ public:
+  Server(const std::filesystem::path& dir, const std::vector<std::string>& extra)
+      : log_(dir / "server.log") {
+    std::vector<std::string> args = {"net",
+                                     "--listen",
+                                     "127.0.0.1:0",
+                                     "--token-file",
+                                     (dir / "token").string(),
+                                     "--out",
+                                     (dir / "served").string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    pid_ = spawn_swarmnet(args, log_);
+    const std::regex serving(R"(serving robot halves on 127\.0\.0\.1:(\d+))");
+    for (int i = 0; i < 500 && port_ == 0; ++i) {
+      std::smatch m;
+      const std::string text = read_file(log_);
+      if (std::regex_search(text, m, serving)) port_ = std::stoi(m[1]);
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  }
+  ~Server() {
+    if (!exited_) {
+      ::kill(pid_, SIGKILL);
+      ::waitpid(pid_, nullptr, 0);
+    }
+  }
+  Server(const Server&) = delete;
+  Server& operator=(const Server&) = delete;
+
+  [[nodiscard]] int port() const { return port_; }
+  [[nodiscard]] std::string address() const { return "tcp://127.0.0.1:" + std::to_string(port_); }
+  [[nodiscard]] std::string log() const { return read_file(log_); }
+  // Waits up to 10 s for the server to exit by itself; its exit status, or -1.
+  int wait_exit() {
+    for (int i = 0; i < 1000; ++i) {
+      int status = 0;
+      if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+        exited_ = true;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return -1;
+  }
+
+ private:
+  std::filesystem::path log_;
+  pid_t pid_ = -1;
+  int port_ = 0;
+  bool exited_ = false;
+};
+
+class RemoteNetworkHalf : public ::testing::Test {
+ protected:
+  RemoteNetworkHalf() {
+    write_token(dir_.path() / "token", "correct horse battery staple 42", 0600);
+  }
+
+  CommandResult run_robot_half(const Server& server, const std::string& token_file,
+                               const std::string& out) {
+    return run_swarmnet("run " + std::string(SWARMNET_SOURCE_DIR) +
+                        "/configs/quickstart.yaml --set duration_s=2 --set robots.count=10 -q "
+                        "--net " +
+                        server.address() + " --token-file " + token_file + " --out " +
+                        (dir_.path() / out).string());
+  }
+
+  // A peer written by hand: it knows the token and sends `scenario` in its hello, asking for
+  // outputs in `run_dir`; then finishes at once. Returns what the server answered.
+  std::string hand_made_peer(const Server& server, const std::string& scenario,
+                             const std::string& run_dir) {
+    WaitPolicy policy;
+    policy.timeout = std::chrono::seconds(10);
+    SocketTransport transport(connect_tcp("127.0.0.1", static_cast<std::uint16_t>(server.port())),
+                              policy, "TCP");
+    const PeerSecret secret = PeerSecret::from_file(dir_.path() / "token");
+    if (std::string why = authenticate_to_acceptor(transport, secret); !why.empty()) return why;
+    StepChannel channel(transport, "the network half");
+    Hello hello;
+    hello.seed = 1;
+    hello.robots = 2;
+    hello.step_ns = 100'000'000;
+    hello.scenario_yaml = scenario;
+    hello.run_dir = run_dir;
+    if (auto r = channel.send_hello(hello); !r.ok()) return r.error;
+    if (auto r = channel.receive_welcome(hello); !r.ok()) return r.error;
+    if (auto r = channel.send_finish(); !r.ok()) return r.error;
+    NetworkReport report;
+    if (auto r = channel.receive_report(report); !r.ok()) return r.error;
+    return "ok";
+  }
+
+  // The quickstart for two robots, one simulated second, with `edit` applied.
+  static std::string scenario(const std::function<void(YAML::Node&)>& edit) {
+    YAML::Node tree = YAML::LoadFile(std::string(SWARMNET_SOURCE_DIR) + "/configs/quickstart.yaml");
+    tree["robots"]["count"] = 2;
+    tree["duration_s"] = 1.0;
+    edit(tree);
+    YAML::Emitter out;
+    out << tree;
+    return out.c_str();
+  }
+
+  TempDir dir_;
+};
+
+TEST_F(RemoteNetworkHalf, ARobotHalfWithTheTokenRunsAndOutputsStayOnTheServer) {
+  Server server(dir_.path(), {});
+  ASSERT_NE(server.port(), 0) << server.log();
+  const CommandResult run = run_robot_half(server, (dir_.path() / "token").string(), "run");
+  ASSERT_EQ(run.exit_code, 0) << run.output << server.log();
+  EXPECT_TRUE(std::filesystem::exists(dir_.path() / "served" / "run-0001" / "packets.csv"));
+  EXPECT_EQ(server.wait_exit(), 0) << server.log();
+}
+
+TEST_F(RemoteNetworkHalf, AWrongTokenIsRefusedAndTheServerServesTheNextPeer) {
+  Server server(dir_.path(), {});
+  write_token(dir_.path() / "wrong", "a token the server never heard of", 0600);
+  const CommandResult refused = run_robot_half(server, (dir_.path() / "wrong").string(), "a");
+  EXPECT_NE(refused.exit_code, 0);
+  EXPECT_NE(refused.output.find("refused the token"), std::string::npos) << refused.output;
+  const CommandResult served = run_robot_half(server, (dir_.path() / "token").string(), "b");
+  EXPECT_EQ(served.exit_code, 0) << served.output << server.log();
+  EXPECT_NE(server.log().find("did not prove that it knows the token"), std::string::npos);
+}
+
+TEST_F(RemoteNetworkHalf, ASilentPeerIsDroppedAtTheHandshakeDeadline) {
+  Server server(dir_.path(), {"--handshake-timeout", "0.5"});
+  const int silent = connect_tcp("127.0.0.1", static_cast<std::uint16_t>(server.port()));
+  const CommandResult served = run_robot_half(server, (dir_.path() / "token").string(), "run");
+  EXPECT_EQ(served.exit_code, 0) << served.output << server.log();
+  EXPECT_NE(server.log().find("timed out"), std::string::npos) << server.log();
+  ::close(silent);
+}
+
+TEST_F(RemoteNetworkHalf, GarbageBeforeTheHandshakeIsRefusedWithoutParsing) {
+  Server server(dir_.path(), {});
+  const int fd = connect_tcp("127.0.0.1", static_cast<std::uint16_t>(server.port()));
+  const char garbage[] = "\xff\xff\xff\x7fGET / HTTP/1.0\r\n\r\n";
+  ASSERT_GT(::write(fd, garbage, sizeof garbage), 0);
+  const CommandResult served = run_robot_half(server, (dir_.path() / "token").string(), "run");
+  EXPECT_EQ(served.exit_code, 0) << served.output << server.log();
+  EXPECT_NE(server.log().find("refused"), std::string::npos) << server.log();
+  ::close(fd);
+}
+
+TEST_F(RemoteNetworkHalf, ItServesTheRunsAskedForOneAfterAnother) {
+  Server server(dir_.path(), {"--runs", "2"});
+  EXPECT_EQ(run_robot_half(server, (dir_.path() / "token").string(), "one").exit_code, 0);
+  EXPECT_EQ(run_robot_half(server, (dir_.path() / "token").string(), "two").exit_code, 0);
+  EXPECT_EQ(server.wait_exit(), 0) << server.log();
+  EXPECT_TRUE(std::filesystem::exists(dir_.path() / "served" / "run-0002" / "packets.csv"));
+}
+
+TEST_F(RemoteNetworkHalf, APeersPluginPathsAreNeverLoadedNorTheServersFoldersDisclosed) {
+  const std::filesystem::path marker = dir_.path() / "marker";
+  ::setenv("SWARMNET_TEST_MARKER", marker.c_str(), 1);
+  Server server(dir_.path(), {});
+  ::unsetenv("SWARMNET_TEST_MARKER");
+  const std::string answer =
+      hand_made_peer(server, scenario([](YAML::Node& tree) {
+                       tree["plugin_paths"].push_back(SWARMNET_TEST_FIXTURE_DIR "/untrusted");
+                       tree["network"]["routing"]["plugin"] = "marker_routing";
+                     }),
+                     (dir_.path() / "victim").string());
+  EXPECT_NE(answer.find("marker_routing"), std::string::npos) << answer;
+  EXPECT_FALSE(std::filesystem::exists(marker)) << "the server ran the peer's plugin";
+  EXPECT_EQ(answer.find(SWARMNET_TEST_FIXTURE_DIR), std::string::npos) << answer;
+  EXPECT_EQ(answer.find(std::string(SWARMNET_SOURCE_DIR)), std::string::npos) << answer;
+  EXPECT_EQ(answer.find((dir_.path() / "served").string()), std::string::npos) << answer;
+}
+
+TEST_F(RemoteNetworkHalf, APeersRunDirectoryIsNeverWritten) {
+  const std::filesystem::path victim = dir_.path() / "victim";
+  std::filesystem::create_directories(victim);
+  std::ofstream(victim / "packets.csv") << "precious\n";
+  Server server(dir_.path(), {});
+  EXPECT_EQ(hand_made_peer(server, scenario([](YAML::Node&) {}), victim.string()), "ok");
+  EXPECT_EQ(read_file(victim / "packets.csv"), "precious\n");
+  EXPECT_EQ(server.wait_exit(), 0) << server.log();
+  EXPECT_TRUE(std::filesystem::exists(dir_.path() / "served" / "run-0001" / "packets.csv"));
+}
+
+TEST_F(RemoteNetworkHalf, ListeningNeedsAPrivateToken) {
+  const CommandResult no_token =
+      run_swarmnet("net --listen 0.0.0.0:0 --out " + (dir_.path() / "o").string());
+  EXPECT_EQ(no_token.exit_code, 1);
+  EXPECT_NE(no_token.output.find("--listen needs a token"), std::string::npos) << no_token.output;
+  write_token(dir_.path() / "open", "a token anyone on this machine can read", 0644);
+  const CommandResult readable =
+      run_swarmnet("net --listen 0 --token-file " + (dir_.path() / "open").string());
+  EXPECT_EQ(readable.exit_code, 1);
+  EXPECT_NE(readable.output.find("chmod 600"), std::string::npos) << readable.output;
+}
+
+// Validation suggests plugin names from file names: a misspelled name must not make it open (and
+// so run) every library in the scenario's plugin_paths.
+TEST_F(RemoteNetworkHalf, AMisspelledPluginIsAnsweredWithoutLoadingAnyLibrary) {
+  const std::filesystem::path file = dir_.path() / "misspelled.yaml";
+  std::ofstream(file) << scenario([](YAML::Node& tree) {
+    tree["plugin_paths"].push_back(SWARMNET_TEST_FIXTURE_DIR "/untrusted");
+    tree["network"]["routing"]["plugin"] = "floodnig";
+  });
+  const std::filesystem::path marker = dir_.path() / "marker";
+  ::setenv("SWARMNET_TEST_MARKER", marker.c_str(), 1);
+  const CommandResult validated = run_swarmnet("validate " + file.string());
+  ::unsetenv("SWARMNET_TEST_MARKER");
+  EXPECT_EQ(validated.exit_code, 2) << validated.output;
+  EXPECT_NE(validated.output.find("marker_routing"), std::string::npos) << validated.output;
+  EXPECT_NE(validated.output.find("flooding"), std::string::npos) << validated.output;
+  EXPECT_FALSE(std::filesystem::exists(marker)) << "validate ran a library's code to list names";
+}
+
+}  // namespace
+}  // namespace swarmnet::testing
