@@ -43,8 +43,7 @@ void DatagramEndpoint::receive(ns3::Ptr<ns3::Socket> socket) {
     std::uint32_t hops = 1;
     ns3::SocketIpTtlTag ttl;
     if (packet->RemovePacketTag(ttl)) hops = kDefaultTtl + 1 - ttl.GetTtl();
-    world_.metrics.message_received(*index, node_id_,
-                                    ns3::Simulator::Now().GetNanoSeconds(), hops);
+    world_.metrics.message_received(*index, node_id_, ns3::Simulator::Now().GetNanoSeconds(), hops);
   }
 }
 

@@ -49,7 +49,8 @@ inline void append_payload(std::vector<std::uint8_t>& out, std::uint32_t index,
   }
 }
 
-// The message index carried by the `size` bytes at `payload`, or nothing if it is too short or names no message.
+// The message index carried by the `size` bytes at `payload`, or nothing if it is too short or
+// names no message.
 inline std::optional<std::uint32_t> payload_index(const std::uint8_t* payload, std::size_t size,
                                                   std::size_t message_count) {
   if (size < kMessageIndexBytes) return std::nullopt;

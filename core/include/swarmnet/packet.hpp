@@ -22,12 +22,12 @@ inline constexpr std::uint64_t kNoMessage = std::numeric_limits<std::uint64_t>::
 using Payload = std::vector<std::byte>;
 
 struct Packet {
-  std::uint64_t uid = 0;          // unique in a run; copies made by forwarding keep it
-  NodeId source = kNoNode;        // originator
+  std::uint64_t uid = 0;    // unique in a run; copies made by forwarding keep it
+  NodeId source = kNoNode;  // originator
   NodeId destination = kBroadcast;
   std::uint64_t message_id = kNoMessage;  // the application message carried; kNoMessage: control
-  SimTime sent_at{};              // when the originator's application handed it down
-  std::uint32_t hops = 0;         // links traversed so far; the kernel counts them on reception
+  SimTime sent_at{};                      // when the originator's application handed it down
+  std::uint32_t hops = 0;            // links traversed so far; the kernel counts them on reception
   std::vector<std::uint8_t> header;  // the routing protocol's own header, serialised by it
   std::shared_ptr<const Payload> payload;  // application bytes (null for control packets)
 
@@ -50,9 +50,9 @@ struct Frame {
   double bitrate_bps = 0.0;        // rate of the payload part, for the PHY's error model
   std::uint16_t sequence = 0;
   bool retry = false;
-  SimTime nav{};                   // duration field (virtual carrier sense), 0 if unused
-  std::uint64_t uid = 0;           // unique per transmission; assigned by the kernel
-  std::optional<Packet> packet;    // the MSDU, for data frames
+  SimTime nav{};                 // duration field (virtual carrier sense), 0 if unused
+  std::uint64_t uid = 0;         // unique per transmission; assigned by the kernel
+  std::optional<Packet> packet;  // the MSDU, for data frames
 
   [[nodiscard]] std::uint32_t size_bytes() const {
     return header_bytes + (packet ? packet->size_bytes() : 0U);
@@ -70,11 +70,16 @@ enum class DropReason : std::uint8_t {
 
 inline const char* to_string(DropReason reason) {
   switch (reason) {
-    case DropReason::no_route: return "no_route";
-    case DropReason::queue_full: return "queue_full";
-    case DropReason::ttl_expired: return "ttl_expired";
-    case DropReason::retry_limit: return "retry_limit";
-    case DropReason::buffer_timeout: return "buffer_timeout";
+    case DropReason::no_route:
+      return "no_route";
+    case DropReason::queue_full:
+      return "queue_full";
+    case DropReason::ttl_expired:
+      return "ttl_expired";
+    case DropReason::retry_limit:
+      return "retry_limit";
+    case DropReason::buffer_timeout:
+      return "buffer_timeout";
   }
   return "?";
 }

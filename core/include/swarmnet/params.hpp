@@ -20,10 +20,14 @@ enum class ParamType : std::uint8_t { real, integer, boolean, text };
 
 inline const char* to_string(ParamType type) {
   switch (type) {
-    case ParamType::real: return "real";
-    case ParamType::integer: return "integer";
-    case ParamType::boolean: return "boolean";
-    case ParamType::text: return "text";
+    case ParamType::real:
+      return "real";
+    case ParamType::integer:
+      return "integer";
+    case ParamType::boolean:
+      return "boolean";
+    case ParamType::text:
+      return "text";
   }
   return "?";
 }
@@ -47,8 +51,14 @@ struct ParamSpec {
 inline ParamSpec real_param(std::string name, double default_value, std::string unit,
                             std::string help, double min = -std::numeric_limits<double>::infinity(),
                             double max = std::numeric_limits<double>::infinity()) {
-  return {std::move(name), ParamType::real, default_value, std::move(unit), std::move(help),
-          min,             max,             {}};
+  return {std::move(name),
+          ParamType::real,
+          default_value,
+          std::move(unit),
+          std::move(help),
+          min,
+          max,
+          {}};
 }
 inline ParamSpec integer_param(std::string name, std::int64_t default_value, std::string unit,
                                std::string help,
@@ -68,8 +78,8 @@ inline ParamSpec bool_param(std::string name, bool default_value, std::string he
 }
 inline ParamSpec text_param(std::string name, std::string default_value, std::string help,
                             std::vector<std::string> choices = {}) {
-  return {std::move(name), ParamType::text,          std::move(default_value), "", std::move(help),
-          0,               0,                        std::move(choices)};
+  return {std::move(name),   ParamType::text, std::move(default_value), "", std::move(help), 0, 0,
+          std::move(choices)};
 }
 
 // Validated parameter values of one plugin instance, keyed by name (ordered: deterministic).

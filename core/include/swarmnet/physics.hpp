@@ -26,8 +26,8 @@ class Physics : public Plugin {
   // the distance in metres from the body's surface to the nearest wall, obstacle or robot along
   // that ray, or range_m when nothing is within range. Valid for the bodies as of the last
   // setup() or step().
-  virtual void sense_proximity(std::span<const RobotBody> bodies, std::size_t robot,
-                               double range_m, std::span<double> rays) const = 0;
+  virtual void sense_proximity(std::span<const RobotBody> bodies, std::size_t robot, double range_m,
+                               std::span<double> rays) const = 0;
 };
 
 }  // namespace swarmnet

@@ -33,11 +33,16 @@ enum class PluginKind : std::uint8_t { physics, propagation, mac, routing, contr
 
 inline const char* to_string(PluginKind kind) {
   switch (kind) {
-    case PluginKind::physics: return "physics";
-    case PluginKind::propagation: return "propagation";
-    case PluginKind::mac: return "mac";
-    case PluginKind::routing: return "routing";
-    case PluginKind::controller: return "controller";
+    case PluginKind::physics:
+      return "physics";
+    case PluginKind::propagation:
+      return "propagation";
+    case PluginKind::mac:
+      return "mac";
+    case PluginKind::routing:
+      return "routing";
+    case PluginKind::controller:
+      return "controller";
   }
   return "?";
 }
@@ -64,8 +69,8 @@ struct PluginInfo {
 
 // What an instance is made from.
 struct PluginArgs {
-  ParamSet params;           // validated, defaults filled
-  std::uint64_t seed = 0;    // this instance's own stream seed
+  ParamSet params;                // validated, defaults filled
+  std::uint64_t seed = 0;         // this instance's own stream seed
   std::uint64_t shared_seed = 0;  // the same for every instance of this plugin in one run
   std::uint32_t instance = 0;     // robot/node index for per-robot and per-node plugins, else 0
   std::uint32_t instance_count = 1;
@@ -88,21 +93,20 @@ inline constexpr const char* kPluginEntrySymbol = "swarmnet_plugin_entry";
 
 template <typename PluginClass>
 PluginDescriptor make_descriptor() {
-  return PluginDescriptor{
-      PluginClass::kKind, PluginClass::info(),
-      [](const PluginArgs& args) -> std::unique_ptr<Plugin> {
-        return std::make_unique<PluginClass>(args);
-      }};
+  return PluginDescriptor{PluginClass::kKind, PluginClass::info(),
+                          [](const PluginArgs& args) -> std::unique_ptr<Plugin> {
+                            return std::make_unique<PluginClass>(args);
+                          }};
 }
 
 }  // namespace swarmnet
 
 // Registers PluginClass as this library's plugin. Use once per library, at namespace scope.
-#define SWARMNET_PLUGIN(PluginClass)                                                       \
-  extern "C" __attribute__((visibility("default"))) const ::swarmnet::SwarmnetPluginEntry* \
-  swarmnet_plugin_entry() {                                                                \
-    static const ::swarmnet::PluginDescriptor descriptor =                                 \
-        ::swarmnet::make_descriptor<PluginClass>();                                        \
+#define SWARMNET_PLUGIN(PluginClass)                                                          \
+  extern "C" __attribute__((visibility("default"))) const ::swarmnet::SwarmnetPluginEntry*    \
+  swarmnet_plugin_entry() {                                                                   \
+    static const ::swarmnet::PluginDescriptor descriptor =                                    \
+        ::swarmnet::make_descriptor<PluginClass>();                                           \
     static const ::swarmnet::SwarmnetPluginEntry entry{::swarmnet::kAbiVersion, &descriptor}; \
-    return &entry;                                                                         \
+    return &entry;                                                                            \
   }

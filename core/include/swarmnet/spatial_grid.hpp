@@ -22,8 +22,10 @@ class SpatialGrid {
   void reset(const Rect& bounds, double cell_m) {
     bounds_ = bounds;
     cell_m_ = std::max(cell_m, 1e-9);
-    columns_ = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(bounds.width_m() / cell_m_)));
-    rows_ = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(bounds.height_m() / cell_m_)));
+    columns_ =
+        std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(bounds.width_m() / cell_m_)));
+    rows_ = std::max<std::int64_t>(
+        1, static_cast<std::int64_t>(std::ceil(bounds.height_m() / cell_m_)));
     // Guard against absurd cell counts from a tiny cell over a huge area.
     while (columns_ * rows_ > (std::int64_t{1} << 24)) {
       cell_m_ *= 2.0;
@@ -60,7 +62,8 @@ class SpatialGrid {
     for (std::int64_t r = r0; r <= r1; ++r) {
       for (std::int64_t c = c0; c <= c1; ++c) {
         const auto cell = static_cast<std::size_t>(r * columns_ + c);
-        for (std::uint32_t k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) visit(entries_[k]);
+        for (std::uint32_t k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k)
+          visit(entries_[k]);
       }
     }
   }
