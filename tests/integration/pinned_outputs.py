@@ -1,0 +1,93 @@
+#!/usr/bin/env python3
+"""Results change only on purpose: short reference runs whose output hashes are pinned in the tree.
+
+Runs each reference scenario below with the built `swarmnet`, hashes its outputs (packets.csv,
+positions.bin, mobility.ns2, traffic.csv, and summary.json without its timing fields) and compares
+them with tests/integration/pinned_outputs.txt. A change that moves a result fails here; if the
+change is meant to move it, re-pin and say so in the commit:
+
+    python3 tests/integration/pinned_outputs.py --bin build/bin/swarmnet --repin
+
+Standard library only.
+"""
+import argparse
+import hashlib
+import json
+import pathlib
+import subprocess
+import sys
+import tempfile
+
+SOURCE = pathlib.Path(__file__).resolve().parents[2]
+PINS = SOURCE / "tests" / "integration" / "pinned_outputs.txt"
+
+# name: (scenario, extra arguments). Short, so the whole check takes seconds.
+RUNS = {
+    "quickstart-strict": ("configs/quickstart.yaml", ["--set", "duration_s=20"]),
+    "quickstart-pipelined": ("configs/quickstart.yaml",
+                             ["--set", "duration_s=20", "--set", "sync=pipelined"]),
+    "wireless": ("configs/wireless.yaml", ["--set", "duration_s=10"]),
+    "aodv": ("configs/aodv.yaml", ["--set", "duration_s=10"]),
+}
+FILES = ["packets.csv", "positions.bin", "mobility.ns2", "traffic.csv", "summary.json"]
+# Fields of summary.json that measure the machine, not the simulation.
+TIMING = ["wall_s", "cpu_s", "realtime_factor", "transport_share"]
+
+
+def digest(path: pathlib.Path) -> str:
+    data = path.read_bytes()
+    if path.name == "summary.json":
+        summary = json.loads(data)
+        for key in TIMING:
+            summary.pop(key, None)
+        data = json.dumps(summary, sort_keys=True).encode()
+    return hashlib.sha256(data).hexdigest()
+
+
+def measure(binary: str, work: pathlib.Path) -> dict:
+    hashes = {}
+    for name, (scenario, extra) in RUNS.items():
+        out = work / name
+        command = [binary, "run", scenario, "--quiet", "--transport", "inproc", "--out", str(out),
+                   *extra]
+        done = subprocess.run(command, cwd=SOURCE, capture_output=True, text=True)
+        if done.returncode != 0:
+            sys.exit(f"pinned_outputs: {' '.join(command)} failed:\n{done.stdout}{done.stderr}")
+        for file in FILES:
+            hashes[f"{name} {file}"] = digest(out / file)
+    return hashes
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--bin", required=True, help="the swarmnet command to run")
+    parser.add_argument("--repin", action="store_true", help="write the hashes measured now")
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory(prefix="swarmnet-pinned-") as work:
+        measured = measure(args.bin, pathlib.Path(work))
+    if args.repin:
+        PINS.write_text("".join(f"{key} {value}\n" for key, value in measured.items()))
+        print(f"pinned_outputs: wrote {len(measured)} hashes to {PINS.relative_to(SOURCE)}")
+        return 0
+    pinned = {}
+    for line in PINS.read_text().splitlines():
+        run, file, value = line.split()
+        pinned[f"{run} {file}"] = value
+    moved = [key for key in measured if pinned.get(key) != measured[key]]
+    missing = [key for key in pinned if key not in measured]
+    if moved or missing:
+        for key in moved:
+            print(f"pinned_outputs: {key} changed ({pinned.get(key, 'not pinned')} -> "
+                  f"{measured[key]})")
+        for key in missing:
+            print(f"pinned_outputs: {key} is pinned but no longer produced")
+        print("pinned_outputs: results moved. If that is intended, re-pin and say so in the "
+              "commit:\n  python3 tests/integration/pinned_outputs.py --bin build/bin/swarmnet "
+              "--repin")
+        return 1
+    print(f"pinned_outputs: {len(measured)} outputs of {len(RUNS)} reference runs unchanged")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
