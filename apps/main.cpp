@@ -1,10 +1,12 @@
 // The swarmnet command: run, validate, plugins, sweep, stats, replay, bench.
 #include <CLI/CLI.hpp>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -15,6 +17,7 @@
 #include "coupling/stop_signal.hpp"
 #include "default_scenario.hpp"
 #include "display/summary_printout.hpp"
+#include "outputs/run_directory.hpp"
 #include "plugin/plugin_catalog.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "replay_command.hpp"
@@ -46,7 +49,24 @@ void add_scenario_options(CLI::App* command, ScenarioArguments& args, bool with_
       ->add_option("--set", args.set,
                    "override a scenario value, e.g. --set robots.count=100 (repeatable)")
       ->type_name("KEY.PATH=VALUE");
-  command->add_option("--seed", args.seed, "master random seed (overrides the file's seed)");
+  // Read as text: CLI11 would wrap "-1" into 2^64-1 for an unsigned option.
+  command
+      ->add_option_function<std::string>(
+          "--seed",
+          [&args](const std::string& text) {
+            std::uint64_t value = 0;
+            const char* end = text.data() + text.size();
+            const auto [rest, error] = std::from_chars(text.data(), end, value);
+            if (text.empty() || text[0] == '-' || error != std::errc() || rest != end ||
+                value > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
+              throw CLI::ValidationError("--seed", "'" + text +
+                                                       "' is not a seed; expected an integer "
+                                                       "0..9223372036854775807");
+            }
+            args.seed = value;
+          },
+          "master random seed, 0..2^63-1 (overrides the file's seed)")
+      ->type_name("UINT");
   if (with_outputs)
     command->add_option("--out", args.out, "run directory (default runs/NAME-seedSEED)");
 }
@@ -67,7 +87,8 @@ struct TransportArguments {
   double step_timeout_s = 60.0;
 };
 
-int run_command(ScenarioArguments args, bool quiet, const TransportArguments& transport) {
+int run_command(ScenarioArguments args, bool quiet, bool overwrite,
+                const TransportArguments& transport) {
   if (args.file.empty()) args.file = swarmnet::default_scenario_path().string();
   swarmnet::Scenario scenario;
   try {
@@ -78,6 +99,7 @@ int run_command(ScenarioArguments args, bool quiet, const TransportArguments& tr
   try {
     swarmnet::RunOptions options;
     options.progress = quiet ? nullptr : stderr;
+    options.overwrite = overwrite;
     options.link.kind = *swarmnet::parse_transport_kind(transport.kind);
     options.link.remote = transport.remote;
     options.link.token_file = transport.token_file;
@@ -89,6 +111,16 @@ int run_command(ScenarioArguments args, bool quiet, const TransportArguments& tr
   } catch (const std::exception& error) {
     const int signal = swarmnet::stop_signal();
     return fail(signal != 0 ? 128 + signal : kRunFailed, error.what());
+  }
+  return 0;
+}
+
+int clean_command(const std::vector<std::string>& dirs) {
+  for (const std::string& dir : dirs) {
+    const auto removed = swarmnet::remove_leftover_files(dir);
+    std::printf("%s: removed %zu temporary file(s) an interrupted run left\n", dir.c_str(),
+                removed.size());
+    for (const auto& path : removed) std::printf("  %s\n", path.filename().c_str());
   }
   return 0;
 }
@@ -136,6 +168,10 @@ static int run_main(int argc, char** argv) {
   run->add_option("file", run_args.file, "scenario file")->check(CLI::ExistingFile);
   add_scenario_options(run, run_args, true);
   run->add_flag("-q,--quiet", quiet, "print nothing but errors");
+  bool overwrite = false;
+  run->add_flag("--overwrite", overwrite,
+                "replace an earlier run in the run directory (without it, such a directory is "
+                "refused)");
   TransportArguments transport;
   run->add_option("--transport", transport.kind,
                   "how the two halves talk: shm (two processes, shared memory), inproc (threads), "
@@ -256,6 +292,13 @@ static int run_main(int argc, char** argv) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
 
+  std::vector<std::string> clean_dirs;
+  auto* clean = app.add_subcommand(
+      "clean", "remove the temporary files an interrupted run left in its run directories");
+  clean->add_option("run_dir", clean_dirs, "run directory")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+
   if (argc == 2 && std::string(argv[1]) == "help") {
     std::cout << app.help();
     return 0;
@@ -265,7 +308,8 @@ static int run_main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     return app.exit(error) == 0 ? 0 : kBadInput;
   }
-  if (*run) return run_command(run_args, quiet, transport);
+  if (*run) return run_command(run_args, quiet, overwrite, transport);
+  if (*clean) return clean_command(clean_dirs);
   if (*bench_transport) return swarmnet::bench_transport_command(bench_out, bench_min_time);
   if (*net) {
     net_options.step_timeout = std::chrono::milliseconds(std::llround(net_timeout_ms));

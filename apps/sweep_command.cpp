@@ -110,7 +110,9 @@ pid_t spawn_run(const std::filesystem::path& exe, const SweepSpec& spec, const S
     args.emplace_back("--set");
     args.push_back(set);
   }
-  args.insert(args.end(), {"--seed", std::to_string(run.seed), "--out", dir.string(), "--quiet"});
+  // A run redone (failed or interrupted before) replaces what it left.
+  args.insert(args.end(), {"--seed", std::to_string(run.seed), "--out", dir.string(), "--quiet",
+                           "--overwrite"});
   std::vector<char*> argv;
   argv.reserve(args.size() + 1);
   for (auto& arg : args) argv.push_back(arg.data());

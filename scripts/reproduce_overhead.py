@@ -89,8 +89,8 @@ def main():
                   "--set", f"arena.height_m={side}", "--set", f"duration_s={args.duration_s}",
                   "--quiet"]
         integrated, alone, replay = out / f"integrated-{n}", out / f"robot-alone-{n}", out / f"replay-{n}"
-        swarmnet(binary, "run", str(scenario), *common, "--out", str(integrated))
-        swarmnet(binary, "run", str(scenario), *common, *ONE_HOP, "--out", str(alone))
+        swarmnet(binary, "run", str(scenario), *common, "--out", str(integrated), "--overwrite")
+        swarmnet(binary, "run", str(scenario), *common, *ONE_HOP, "--out", str(alone), "--overwrite")
         swarmnet(binary, "replay", str(integrated), "--out", str(replay), "--quiet")
         i, a, r = summary(integrated), summary(alone), summary(replay)
         rows.append({"config": args.config, "robots": n, "arena_m": side, "integrated": i["cpu_s"],

@@ -15,6 +15,7 @@ identity). Writes a JSON file with every run when --out is given.
 import argparse
 import json
 import os
+import shutil
 import statistics
 import subprocess
 import sys
@@ -46,6 +47,9 @@ RESULT_KEYS = ("packets", "pdr", "delay_s", "hops_mean", "mac", "routing")
 
 
 def run_once(build, scenario, sets, sim_s, out_dir):
+    # Each run starts from an empty directory (builds since --overwrite refuse an earlier run's;
+    # older builds know no --overwrite flag).
+    shutil.rmtree(out_dir, ignore_errors=True)
     command = [os.path.join(build, "bin", "swarmnet"), "run", scenario, "--transport", "inproc",
                "--set", f"duration_s={sim_s}", "--out", out_dir]
     for item in sets:

@@ -67,7 +67,7 @@ def main():
                     yaml.safe_dump(scenario(stack, n, sim_s, not a.no_trace), f)
                 out = os.path.join(tmp, f"{stack}-{n}")
                 cmd = ["/usr/bin/time", "-f", "%M", binary, "run", path, "--transport", "inproc",
-                       "-q", "--out", out]
+                       "-q", "--out", out, "--overwrite"]
                 r = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, check=True)
                 rss_kb = int(r.stderr.strip().splitlines()[-1])
                 with open(os.path.join(out, "summary.json")) as f:

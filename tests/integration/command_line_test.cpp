@@ -2,6 +2,8 @@
 // and a non-zero exit.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "command_runner.hpp"
 
 namespace swarmnet::testing {
@@ -58,6 +60,58 @@ TEST(CommandLine, UnwritableOutputDirectoryIsReported) {
   const auto result = run_swarmnet("run --set duration_s=1 --out /proc/swarmnet-cannot-write");
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_NE(result.output.find("/proc/swarmnet-cannot-write"), std::string::npos) << result.output;
+}
+
+TEST(CommandLine, ANegativeOrHugeSeedIsRefusedAsWritten) {
+  for (const char* seed : {"-1", "18446744073709551615", "12x"}) {
+    const auto result = run_swarmnet("validate " + std::string(SWARMNET_SOURCE_DIR) +
+                                     "/configs/quickstart.yaml --seed " + seed);
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find(std::string("'") + seed + "' is not a seed"), std::string::npos)
+        << result.output;
+  }
+}
+
+TEST(CommandLine, ADeviceOrAHugeFileIsNotReadAsAScenario) {
+  const auto result = run_swarmnet("validate /dev/zero");
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.output.find("/dev/zero: is not a regular file"), std::string::npos)
+      << result.output;
+  TempDir dir;
+  const auto huge = dir.path() / "huge.yaml";
+  std::ofstream(huge) << "name: x\n";
+  std::filesystem::resize_file(huge, std::uintmax_t{65} << 20U);  // sparse: no disk used
+  const auto too_big = run_swarmnet("validate " + huge.string());
+  EXPECT_EQ(too_big.exit_code, 2);
+  EXPECT_NE(too_big.output.find("at most 64 MiB"), std::string::npos) << too_big.output;
+}
+
+TEST(CommandLine, AnEmptyScenarioIsRefusedAtItsFirstLine) {
+  TempDir dir;
+  const auto file = dir.path() / "empty.yaml";
+  std::ofstream(file) << "# nothing but a comment\n";
+  const auto result = run_swarmnet("validate " + file.string());
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.output.find(file.string() + ":1:1: duration_s: missing required key"),
+            std::string::npos)
+      << result.output;
+}
+
+TEST(CommandLine, ARunDirectoryHoldingAnEarlierRunIsReplacedOnlyWhenAsked) {
+  TempDir dir;
+  const std::string run = "run --set duration_s=1 -q --out " + dir.path().string();
+  ASSERT_EQ(run_swarmnet(run).exit_code, 0);
+  const auto again = run_swarmnet(run);
+  EXPECT_EQ(again.exit_code, 1);
+  EXPECT_NE(again.output.find("holds an earlier run"), std::string::npos) << again.output;
+  EXPECT_NE(again.output.find("--overwrite"), std::string::npos) << again.output;
+  std::ofstream(dir.path() / "notes.txt") << "mine\n";
+  const auto replaced = run_swarmnet(run + " --overwrite");
+  EXPECT_EQ(replaced.exit_code, 0) << replaced.output;
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "summary.json"));
+  EXPECT_EQ(read_file(dir.path() / "notes.txt"), "mine\n");  // never removed
+  EXPECT_NE(read_file(dir.path() / "run.log").find("--overwrite: removed the earlier run's"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -183,5 +183,46 @@ TEST(PeerFailure, TerminationSignalStopsBothHalvesCleanly) {
   }
 }
 
+// A closed terminal (SIGHUP) stops a run as Ctrl-C does: both halves, no temporary files, a log
+// that says why.
+TEST(PeerFailure, HangupStopsBothHalvesCleanly) {
+  TempDir dir;
+  BackgroundRun run(dir, {});
+  const pid_t network = run.network_half();
+  ASSERT_GT(network, 0) << run.output();
+  ASSERT_EQ(::kill(run.pid(), SIGHUP), 0);
+  const int status = run.wait_exit(kStopBound);
+  ASSERT_NE(status, -1);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 128 + SIGHUP) << status;
+  EXPECT_NE(run.output().find("interrupted by SIGHUP"), std::string::npos) << run.output();
+  EXPECT_TRUE(wait_gone(network, kStopBound));
+  expect_nothing_left(dir, run.pid());
+  EXPECT_NE(read_file(dir.path() / "run" / "run.log").find("run failed: interrupted by SIGHUP"),
+            std::string::npos);
+}
+
+// A robot half killed outright cannot clean up; `swarmnet clean` removes what it left, and says so.
+TEST(PeerFailure, CleanRemovesWhatAKilledRunLeft) {
+  TempDir dir;
+  BackgroundRun run(dir, {});
+  ASSERT_GT(run.network_half(), 0) << run.output();
+  ASSERT_EQ(::kill(run.pid(), SIGKILL), 0);
+  ASSERT_NE(run.wait_exit(kStopBound), -1);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the network half dies with it
+  std::size_t leftovers = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path() / "run")) {
+    leftovers += entry.path().filename().string().find(".partial-") != std::string::npos;
+  }
+  ASSERT_GT(leftovers, 0U) << "a killed run should have left temporary files to clean";
+  const CommandResult cleaned = run_swarmnet("clean " + (dir.path() / "run").string());
+  EXPECT_EQ(cleaned.exit_code, 0) << cleaned.output;
+  EXPECT_NE(cleaned.output.find("removed " + std::to_string(leftovers) + " temporary file(s)"),
+            std::string::npos)
+      << cleaned.output;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path() / "run")) {
+    EXPECT_EQ(entry.path().string().find(".partial"), std::string::npos) << entry.path();
+  }
+}
+
 }  // namespace
 }  // namespace swarmnet::testing

@@ -87,6 +87,8 @@ const std::vector<BadCase> kBadCases = {
   {"minimal.yaml", {"network.mac.plugin=test_routing"}, "--set network.mac.plugin", "network.mac.plugin", "is a routing plugin; a mac plugin is expected here"},
   {"minimal.yaml", {"physics.params.gravity=1"}, "--set physics.params.gravity", "physics.params.gravity", "not a parameter of plugin 'kinematic2d'; expected no parameters: plugin 'kinematic2d' declares none"},
   {"minimal.yaml", {"seed=-1"}, "--set seed", "seed", "-1 is out of range; expected integer >= 0"},
+  // A name becomes part of a directory name: bounded, and not echoed back whole.
+  {"minimal.yaml", {"name=" + std::string(5000, 'n')}, "--set name", "name", "a name of 5000 characters is too long; expected a name of letters, digits, '_', '-' and '.', at most 128 characters"},
   // A later override replaces the whole list: its elements are located at the override.
   {"minimal.yaml", {"network.propagation=[{plugin: test_propagation, params: {range_m: -1}}]"}, "--set network.propagation", "network.propagation.0.params.range_m", "-1 is out of range; expected real >= 0 (m)"},
 };

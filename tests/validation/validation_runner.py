@@ -89,7 +89,7 @@ def run_pair(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), se
     run_dir = os.path.join(work_dir, "swarmnet")
     ns3_json = os.path.join(work_dir, "ns3.json")
     os.makedirs(work_dir, exist_ok=True)
-    command = [swarmnet, "run", scenario, "--seed", str(seed), "--out", run_dir]
+    command = [swarmnet, "run", scenario, "--seed", str(seed), "--out", run_dir, "--overwrite"]
     command += swarmnet_overrides(stack, routing)
     for override in overrides:
         command += ["--set", override]

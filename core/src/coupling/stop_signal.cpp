@@ -23,6 +23,20 @@ void install_stop_handlers() {
   action.sa_flags = 0;  // no SA_RESTART: blocking calls return EINTR and re-check
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
+  sigaction(SIGHUP, &action, nullptr);  // the terminal closed: stop cleanly, as for Ctrl-C
+}
+
+const char* stop_signal_name(int signal) {
+  switch (signal) {
+    case SIGINT:
+      return "SIGINT";
+    case SIGTERM:
+      return "SIGTERM";
+    case SIGHUP:
+      return "SIGHUP";
+    default:
+      return "a signal";
+  }
 }
 
 int stop_signal() { return received.load(std::memory_order_relaxed); }

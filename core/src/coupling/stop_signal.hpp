@@ -1,5 +1,5 @@
-// SIGINT and SIGTERM during a run: the handler only records the signal; the step loop and every
-// wait check it, so a run stops promptly and still cleans up (child process, shared memory,
+// SIGINT, SIGTERM and SIGHUP during a run: the handler only records the signal; the step loop and
+// every wait check it, so a run stops promptly and still cleans up (child process, shared memory,
 // temporary files) through the ordinary error path.
 #pragma once
 
@@ -9,5 +9,7 @@ namespace swarmnet {
 void install_stop_handlers();
 // The signal that asked the run to stop, or 0.
 int stop_signal();
+// "SIGINT", "SIGTERM", "SIGHUP" for messages.
+const char* stop_signal_name(int signal);
 
 }  // namespace swarmnet

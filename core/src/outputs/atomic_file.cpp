@@ -34,7 +34,8 @@ void AtomicFile::fail(const std::string& what) {
                  (error != 0 ? std::strerror(error) : "write failed"));
 }
 
-void AtomicFile::commit() {
+void AtomicFile::finish() {
+  if (finished_) return;
   errno = 0;
   stream_.flush();
   if (!stream_) fail("cannot write");
@@ -47,6 +48,11 @@ void AtomicFile::commit() {
     fail("cannot sync");
   }
   ::close(fd);
+  finished_ = true;
+}
+
+void AtomicFile::commit() {
+  finish();
   if (std::rename(temporary_.c_str(), path_.c_str()) != 0) fail("cannot rename into place");
   committed_ = true;
 }

@@ -23,8 +23,10 @@ class AtomicFile {
   std::ostream& stream() { return stream_; }
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
 
-  // Flushes, syncs to disk and renames to the final name. Throws RunError with the system's
-  // reason (e.g. "No space left on device") if any write failed.
+  // Flushes and syncs to disk under the temporary name. Throws RunError with the system's reason
+  // (e.g. "No space left on device") if any write failed. No more writes after it.
+  void finish();
+  // finish() (if not done yet), then renames to the final name.
   void commit();
 
  private:
@@ -34,6 +36,7 @@ class AtomicFile {
   std::filesystem::path temporary_;
   std::vector<char> buffer_;
   std::ofstream stream_;
+  bool finished_ = false;
   bool committed_ = false;
 };
 

@@ -23,7 +23,9 @@ std::string ProblemList::locate(const KeyPath& path, const YAML::Mark& mark) con
   for (const auto& entry : overrides_) {
     if (entry.path.starts_with(path)) return entry.origin;
   }
-  return file_;
+  // Nothing in the file to point at (an empty or comment-only file, a key it lacks entirely):
+  // its first line, so that every refusal names a file and a line.
+  return file_ + ":1:1";
 }
 
 void ProblemList::add(const KeyPath& path, const YAML::Mark& mark, const std::string& what,

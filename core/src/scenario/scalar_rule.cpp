@@ -52,6 +52,9 @@ std::optional<double> parse_real(std::string_view text) {
   return value;
 }
 
+// Names become parts of file names (runs/NAME-seedSEED): far below any file system's limit.
+constexpr std::size_t kMaxNameLength = 128;
+
 bool is_name(std::string_view text) {
   return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
@@ -68,7 +71,8 @@ std::string ScalarRule::describe() const {
     case ScalarType::text:
       return "text";
     case ScalarType::name:
-      return "a name of letters, digits, '_', '-' and '.'";
+      return "a name of letters, digits, '_', '-' and '.', at most " +
+             std::to_string(kMaxNameLength) + " characters";
     case ScalarType::choice:
       return "one of " + join(choices, ", ");
     case ScalarType::real:
@@ -238,6 +242,10 @@ std::optional<ParamValue> check_scalar(const ScalarRule& rule, const YAML::Node&
     case ScalarType::text:
       return scalar.text;
     case ScalarType::name:
+      if (scalar.text.size() > kMaxNameLength) {
+        *problem = "a name of " + std::to_string(scalar.text.size()) + " characters is too long";
+        return std::nullopt;
+      }
       if (!is_name(scalar.text)) {
         *problem = shown + " is not a valid name";
         return std::nullopt;

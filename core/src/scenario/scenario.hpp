@@ -2,8 +2,6 @@
 // Produced only by load_scenario() (scenario_loader.hpp); every field here has been checked.
 #pragma once
 
-#include <yaml-cpp/yaml.h>
-
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -104,8 +102,9 @@ struct Scenario {
   NetworkConfig network;
   OutputConfig output;
 
-  // The scenario as run: every key, defaults filled and overrides applied (scenario.resolved.yaml).
-  YAML::Node resolved;
+  // The scenario as run, as YAML text: every key in a fixed order, defaults filled and overrides
+  // applied (scenario.resolved.yaml).
+  std::string resolved_yaml;
 
   [[nodiscard]] std::uint64_t step_count() const;
 };

@@ -14,6 +14,9 @@
 
 namespace swarmnet {
 
+// The largest scenario file read (a scenario with 100,000 obstacles is about 8 MiB).
+inline constexpr std::uintmax_t kMaxScenarioFileBytes = std::uintmax_t{64} << 20U;
+
 struct ScenarioOverrides {
   std::vector<std::string> set;                  // "a.b.c=VALUE", applied in order
   std::optional<std::uint64_t> seed;             // --seed: replaces `seed`

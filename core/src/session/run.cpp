@@ -1,11 +1,11 @@
 #include "session/run.hpp"
 
 #include <unistd.h>
-#include <yaml-cpp/yaml.h>
 
 #include <chrono>
 #include <cinttypes>
 #include <csignal>
+#include <fstream>
 #include <optional>
 #include <sstream>
 #include <thread>
@@ -18,6 +18,7 @@
 #include "outputs/mobility_trace.hpp"
 #include "outputs/output_files.hpp"
 #include "outputs/positions_trace.hpp"
+#include "outputs/run_directory.hpp"
 #include "outputs/run_error.hpp"
 #include "outputs/run_summary.hpp"
 #include "outputs/traffic_schedule.hpp"
@@ -39,21 +40,28 @@ class PeerLost : public RunError {
 // How many steps later the robot half reads a window's deliveries (DESIGN.md section 2).
 std::uint64_t delivery_lag(SyncMode mode) { return mode == SyncMode::strict ? 1 : 2; }
 
-std::string to_yaml(const YAML::Node& node) {
-  YAML::Emitter emitter;
-  emitter << node;
-  return std::string(emitter.c_str()) + "\n";
-}
-
 // run.log: what was run with which plugins, and how it ended.
 class RunLog {
  public:
   explicit RunLog(const std::filesystem::path& path) : file_(path) {}
-  void line(const std::string& text) { file_.stream() << text << '\n'; }
-  void commit() { file_.commit(); }
+  void line(const std::string& text) {
+    if (committed_) {
+      // After the log was committed (a failure renaming summary.json into place): appended, so
+      // that run.log never ends like a finished run's when the run failed.
+      std::ofstream(file_.path(), std::ios::app) << text << '\n';
+      return;
+    }
+    file_.stream() << text << '\n';
+  }
+  void commit() {
+    if (committed_) return;
+    file_.commit();
+    committed_ = true;
+  }
 
  private:
   AtomicFile file_;
+  bool committed_ = false;
 };
 
 void log_plugins(RunLog& log, const Scenario& scenario, PluginLoader& loader) {
@@ -79,7 +87,7 @@ void remove_partial_files(const std::filesystem::path& dir) {
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
     const std::string name = entry.path().filename().string();
-    if (name.find(".partial-") != std::string::npos && !name.ends_with(own)) {
+    if (is_leftover_file(name) && !name.ends_with(own)) {
       std::filesystem::remove(entry.path(), ec);
     }
   }
@@ -91,7 +99,7 @@ void handshake(const Scenario& scenario, const std::filesystem::path& run_dir,
   hello.seed = scenario.seed;
   hello.robots = scenario.robots.count;
   hello.step_ns = from_seconds(scenario.step_s).count();
-  hello.scenario_yaml = to_yaml(scenario.resolved);
+  hello.scenario_yaml = scenario.resolved_yaml;
   hello.run_dir = std::filesystem::absolute(run_dir).string();
   if (const ProtocolResult r = channel.send_hello(hello); !r.ok()) throw PeerLost(r.error);
   if (const ProtocolResult r = channel.receive_welcome(hello); !r.ok()) throw PeerLost(r.error);
@@ -162,15 +170,12 @@ NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, Step
 RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
   RunOutcome outcome;
   outcome.dir = scenario.output.dir;
-  std::error_code ec;
-  std::filesystem::create_directories(outcome.dir, ec);
-  if (ec)
-    throw RunError("cannot create run directory " + outcome.dir.string() + ": " + ec.message());
-  std::filesystem::remove(outcome.dir / kSummaryFile, ec);  // a stale summary would look current
+  const std::vector<std::string> notes = prepare_run_directory(outcome.dir, options.overwrite);
 
-  write_file_atomically(outcome.dir / kResolvedScenarioFile, to_yaml(scenario.resolved));
+  write_file_atomically(outcome.dir / kResolvedScenarioFile, scenario.resolved_yaml);
   RunLog log(outcome.dir / kLogFile);
   log.line("SwarmNet run of scenario '" + scenario.name + "' from " + scenario.source.string());
+  for (const std::string& note : notes) log.line(note);
   log.line("seed " + std::to_string(scenario.seed) + ", " + std::to_string(scenario.robots.count) +
            " robots, " + std::to_string(scenario.step_count()) + " steps, sync " +
            to_string(scenario.sync));
@@ -235,7 +240,7 @@ RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
     }
     const std::string network_error = link->finish();
     if (const int signal = stop_signal(); signal != 0) {
-      throw RunError(std::string("interrupted by ") + (signal == SIGINT ? "SIGINT" : "SIGTERM"));
+      throw RunError(std::string("interrupted by ") + stop_signal_name(signal));
     }
     // When the robot half lost the network half without being told why, how the network half
     // ended (its exit status) is the explanation; otherwise the first account is the clearest.
@@ -263,10 +268,14 @@ RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
     summary.controllers = &world.controller_metrics();
     outcome.summary = build_summary(summary);
 
+    // Written (and a full disk found) before run.log says the run finished; renamed into place
+    // last, so that a summary.json is present only when every other output is complete.
+    AtomicFile summary_file(outcome.dir / kSummaryFile);
+    summary_file.stream() << outcome.summary.dump(2) << "\n";
+    summary_file.finish();
     log.line("finished: " + std::to_string(scenario.step_count()) + " steps");
     log.commit();
-    // Last, so that a summary.json is present only when every other output is complete.
-    write_file_atomically(outcome.dir / kSummaryFile, outcome.summary.dump(2) + "\n");
+    summary_file.commit();
   } catch (const std::exception& error) {
     // Both halves have stopped by now; a network half that was killed could not remove its own.
     remove_partial_files(outcome.dir);

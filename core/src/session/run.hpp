@@ -14,6 +14,7 @@ namespace swarmnet {
 struct RunOptions {
   std::FILE* progress = stderr;  // progress line target (shown only on a terminal); null: none
   LinkOptions link;              // how to reach the network half
+  bool overwrite = false;        // replace an earlier run in the run directory (--overwrite)
 };
 
 struct RunOutcome {
