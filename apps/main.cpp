@@ -347,6 +347,7 @@ static int run_main(int argc, char** argv) {
 }
 
 int main(int argc, char** argv) {
+  swarmnet::follow_parent_from_environment();
   try {
     return run_main(argc, argv);
   } catch (const std::exception& error) {

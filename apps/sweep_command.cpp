@@ -2,15 +2,19 @@
 
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <thread>
@@ -19,6 +23,7 @@
 #include "coupling/stop_signal.hpp"
 #include "outputs/atomic_file.hpp"
 #include "outputs/output_files.hpp"
+#include "outputs/run_error.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "scenario/scenario_loader.hpp"
 #include "sweep_file.hpp"
@@ -125,11 +130,48 @@ pid_t spawn_run(const std::filesystem::path& exe, const SweepSpec& spec, const S
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
                                    O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  // The run dies with the sweep (SIGTERM, so it still cleans up): no orphans after a kill.
+  std::vector<char*> envp;
+  for (char** e = environ; *e != nullptr; ++e) envp.push_back(*e);
+  std::string parent = std::string(kParentVariable) + "=" + std::to_string(::getpid());
+  envp.push_back(parent.data());
+  envp.push_back(nullptr);
   pid_t pid = 0;
-  const int error = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  const int error = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
   return error == 0 ? pid : -1;
 }
+
+// Holds an exclusive lock on the sweep directory for this process's life: a second sweep into
+// the same directory (an immediate resume while the first still runs) is refused, not run into
+// the same run directories at the same time.
+class SweepLock {
+ public:
+  explicit SweepLock(const std::filesystem::path& out) {
+    const std::filesystem::path path = out / ".sweep.lock";
+    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
+    if (fd_ < 0) throw RunError("cannot open " + path.string() + ": " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      char holder[32] = {};
+      const ssize_t n = ::pread(fd_, holder, sizeof holder - 1, 0);
+      ::close(fd_);
+      throw RunError("another sweep" +
+                     (n > 0 ? " (pid " + std::string(holder, static_cast<std::size_t>(n)) + ")"
+                            : std::string()) +
+                     " is running into " + out.string() + "; wait for it or stop it first");
+    }
+    const std::string pid = std::to_string(::getpid());
+    if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) < 0) {
+      // The lock holds without the pid; the pid only makes the refusal message clearer.
+    }
+  }
+  ~SweepLock() { ::close(fd_); }
+  SweepLock(const SweepLock&) = delete;
+  SweepLock& operator=(const SweepLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
 
 std::string last_line(const std::filesystem::path& path) {
   std::ifstream in(path);
@@ -226,6 +268,13 @@ int sweep_command(const SweepOptions& options) {
   if (ec) {
     std::fprintf(stderr, "swarmnet: error: cannot create %s: %s\n", runs_dir.string().c_str(),
                  ec.message().c_str());
+    return kRunFailed;
+  }
+  std::optional<SweepLock> lock;
+  try {
+    lock.emplace(out);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "swarmnet: error: %s\n", error.what());
     return kRunFailed;
   }
   {

@@ -3,9 +3,11 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
+#include <stdexcept>
 
 #include "text/text_join.hpp"
 
@@ -382,7 +384,27 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
   return spec;
 }
 
+std::size_t SweepSpec::run_count() const {
+  std::size_t count = seeds.size();
+  for (const auto& axis : axes) {
+    const std::size_t points = axis.points.size();
+    if (points != 0 && count > std::numeric_limits<std::size_t>::max() / points) {
+      return std::numeric_limits<std::size_t>::max();
+    }
+    count *= points;
+  }
+  return count;
+}
+
 std::vector<SweepRun> SweepSpec::expand() const {
+  if (const std::size_t count = run_count(); count > kMaxSweepRuns) {
+    throw std::length_error("the sweep expands into " +
+                            (count == std::numeric_limits<std::size_t>::max()
+                                 ? std::string("more than 2^64")
+                                 : std::to_string(count)) +
+                            " runs; at most " + std::to_string(kMaxSweepRuns) +
+                            " are allowed (split it into several sweeps)");
+  }
   std::size_t combinations = 1;
   for (const auto& axis : axes) combinations *= axis.points.size();
   std::vector<SweepRun> runs;

@@ -59,6 +59,10 @@ struct SweepRun {
   std::vector<std::string> set;    // --set arguments (fixed ones first, then the grid's)
 };
 
+// The most runs one sweep may expand into (each is a directory and a process): far beyond any
+// study, far below what exhausts memory.
+inline constexpr std::size_t kMaxSweepRuns = 1'000'000;
+
 struct SweepSpec {
   std::filesystem::path file;
   std::filesystem::path base;  // absolute
@@ -67,7 +71,10 @@ struct SweepSpec {
   std::vector<SweepAxis> axes;
   std::vector<std::uint64_t> seeds;
 
+  // How many runs expand() gives, counted without building them (saturates at SIZE_MAX).
+  [[nodiscard]] std::size_t run_count() const;
   // Every run, in a stable order: axes in file order (the first varies slowest), then seeds.
+  // Throws std::length_error for more than kMaxSweepRuns runs.
   [[nodiscard]] std::vector<SweepRun> expand() const;
 };
 

@@ -188,5 +188,59 @@ TEST(SweepCommand, SigintStopsTheChildrenAndKeepsWhatFinished) {
             std::string::npos);
 }
 
+// A grid too large to expand is refused with its size, before anything is built.
+TEST(SweepCommand, AHugeGridIsRefusedWithItsCount) {
+  TempDir dir;
+  std::string values = "[";
+  for (int i = 1; i <= 100; ++i) values += std::to_string(i) + (i < 100 ? ", " : "]");
+  auto path = dir.path() / "huge.yaml";
+  std::ofstream(path) << "base: " << kQuickstart << "\n"
+                      << "grid:\n  robots.count: " << values << "\n  duration_s: " << values
+                      << "\n  step_s: [0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0]"
+                      << "\n  seed: " << values << "\nseeds: " << values << "\n";
+  const auto result = run_swarmnet("sweep " + path.string() + " --check");
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("expands into 1000000000 runs; at most 1000000"), std::string::npos)
+      << result.output;
+}
+
+// A sweep holds its directory: a second one into it is refused while the first runs, and a
+// killed sweep takes its runs with it.
+TEST(SweepCommand, OneSweepAtATimeAndItsRunsDieWithIt) {
+  TempDir dir;
+  auto path = dir.path() / "long.yaml";
+  std::ofstream(path) << "base: " << kQuickstart << "\n"
+                      << "set:\n  duration_s: 900\n  arena.obstacles: []\n"
+                      << "grid:\n  robots.count: [60]\nseeds: [1]\n";
+  const auto out = dir.path() / "out";
+  const pid_t sweep = spawn_swarmnet({"sweep", path.string(), "-j", "1", "--out", out.string()},
+                                     dir.path() / "sweep.log");
+  const auto run_dir = out / "runs" / "count-60_seed-1";
+  for (int i = 0; i < 200 && !std::filesystem::exists(run_dir / "scenario.resolved.yaml"); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  ASSERT_TRUE(std::filesystem::exists(run_dir / "scenario.resolved.yaml"));
+  const auto second = run_swarmnet("sweep " + path.string() + " -j 1 --out " + out.string());
+  EXPECT_EQ(second.exit_code, 1) << second.output;
+  EXPECT_NE(second.output.find("another sweep (pid " + std::to_string(sweep) + ") is running"),
+            std::string::npos)
+      << second.output;
+
+  // The run's pid, from the kernel's list of the sweep's children.
+  pid_t run = 0;
+  std::ifstream(std::string("/proc/") + std::to_string(sweep) + "/task/" + std::to_string(sweep) +
+                "/children") >>
+      run;
+  ASSERT_GT(run, 0);
+  ASSERT_EQ(::kill(sweep, SIGKILL), 0);
+  ASSERT_EQ(::waitpid(sweep, nullptr, 0), sweep);
+  bool gone = false;
+  for (int i = 0; i < 200 && !gone; ++i) {
+    gone = ::kill(run, 0) != 0;
+    if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  }
+  EXPECT_TRUE(gone) << "the run outlived its killed sweep";
+}
+
 }  // namespace
 }  // namespace swarmnet::testing

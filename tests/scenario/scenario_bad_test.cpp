@@ -51,7 +51,7 @@ const std::vector<BadCase> kBadCases = {
   {"bad_name.yaml", {}, "2:7", "name", "'my/scenario' is not a valid name; expected a name of letters, digits, '_', '-' and '.'"},
   // Ranges and choices.
   {"out_of_range.yaml", {}, "10:11", "robots.proximity.rays", "400 is out of range; expected integer 0..360"},
-  {"negative_step.yaml", {}, "4:9", "step_s", "-0.1 is out of range; expected real > 0 (s)"},
+  {"negative_step.yaml", {}, "4:9", "step_s", "-0.1 is out of range; expected real >= 1e-09 (s)"},
   {"empty_controller_list.yaml", {}, "9:16", "robots.controllers", "is an empty list; expected a non-empty list of {plugin: NAME, params: {...}} naming controller plugins"},
   {"bad_choice.yaml", {}, "4:7", "sync", "'strickt' is not a valid choice (did you mean 'strict'?); expected one of strict, pipelined"},
   // Plugins.
@@ -87,6 +87,8 @@ const std::vector<BadCase> kBadCases = {
   {"minimal.yaml", {"network.mac.plugin=test_routing"}, "--set network.mac.plugin", "network.mac.plugin", "is a routing plugin; a mac plugin is expected here"},
   {"minimal.yaml", {"physics.params.gravity=1"}, "--set physics.params.gravity", "physics.params.gravity", "not a parameter of plugin 'kinematic2d'; expected no parameters: plugin 'kinematic2d' declares none"},
   {"minimal.yaml", {"seed=-1"}, "--set seed", "seed", "-1 is out of range; expected integer >= 0"},
+  // What the run would refuse, validate refuses: the network half counts time in whole ns.
+  {"minimal.yaml", {"step_s=1e-12", "duration_s=1e-11"}, "--set step_s", "step_s", "1e-12 is out of range; expected real >= 1e-09 (s)"},
   // A name becomes part of a directory name: bounded, and not echoed back whole.
   {"minimal.yaml", {"name=" + std::string(5000, 'n')}, "--set name", "name", "a name of 5000 characters is too long; expected a name of letters, digits, '_', '-' and '.', at most 128 characters"},
   // A later override replaces the whole list: its elements are located at the override.

@@ -1,7 +1,12 @@
 #include "coupling/stop_signal.hpp"
 
+#include <sys/prctl.h>
+#include <unistd.h>
+
 #include <atomic>
 #include <csignal>
+#include <cstdlib>
+#include <string>
 
 namespace swarmnet {
 
@@ -24,6 +29,15 @@ void install_stop_handlers() {
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
   sigaction(SIGHUP, &action, nullptr);  // the terminal closed: stop cleanly, as for Ctrl-C
+}
+
+void follow_parent_from_environment() {
+  const char* text = std::getenv(kParentVariable);
+  if (text == nullptr) return;
+  const long parent = std::strtol(text, nullptr, 10);
+  ::unsetenv(kParentVariable);  // for this process only: its own children have another parent
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);  // stops like Ctrl-C: cleans up, takes its own child along
+  if (parent > 0 && ::getppid() != static_cast<pid_t>(parent)) std::_Exit(128 + SIGTERM);
 }
 
 const char* stop_signal_name(int signal) {

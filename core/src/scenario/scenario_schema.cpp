@@ -128,7 +128,7 @@ const KeySpec& scenario_schema() {
         .at_least(0).defaults("1"),
     real_key("duration_s", "s", "Simulated time to run; a whole number of steps.").above(0).need(),
     real_key("step_s", "s", "Robot step length dt; one batch is exchanged per step.")
-        .above(0).defaults("0.1"),
+        .at_least(1e-9).defaults("0.1"),  // the network half counts time in whole ns
     choice_key("sync", {"strict", "pipelined"},
                "strict: deliveries of step i are read at step i+1, the halves alternate; "
                "pipelined: read at step i+2, both halves run at once.").defaults("strict"),
