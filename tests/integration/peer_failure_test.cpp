@@ -183,6 +183,27 @@ TEST(PeerFailure, TerminationSignalStopsBothHalvesCleanly) {
   }
 }
 
+// A robot half stopped (Ctrl-Z) longer than the step timeout: the network half gives up, and when
+// the robot half resumes it reports the network half's reason, not only its exit status, on
+// every transport.
+TEST(PeerFailure, TheNetworkHalfsReasonReachesTheRobotHalfOnEveryTransport) {
+  for (const char* transport : {"shm", "uds", "tcp"}) {
+    TempDir dir;
+    BackgroundRun run(dir, {"--transport", transport, "--step-timeout", "1"});
+    ASSERT_GT(run.network_half(), 0) << run.output();
+    ASSERT_EQ(::kill(run.pid(), SIGSTOP), 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2500));
+    ASSERT_EQ(::kill(run.pid(), SIGCONT), 0);
+    const int status = run.wait_exit(kStopBound);
+    ASSERT_NE(status, -1) << transport;
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << status;
+    EXPECT_NE(run.output().find("the network half failed: lost the robot half: no answer within "
+                                "the step timeout"),
+              std::string::npos)
+        << transport << ": " << run.output();
+  }
+}
+
 // A closed terminal (SIGHUP) stops a run as Ctrl-C does: both halves, no temporary files, a log
 // that says why.
 TEST(PeerFailure, HangupStopsBothHalvesCleanly) {

@@ -379,6 +379,18 @@ ProtocolResult StepChannel::receive_report(NetworkReport& report) {
   return {};
 }
 
+std::string StepChannel::drain_for_failure() {
+  // Bounded: a peer that stopped left at most a few steps of records behind.
+  constexpr int kMaxRecords = 1 << 24;
+  for (int i = 0; i < kMaxRecords && !peer_failed_; ++i) {
+    RecordType type{};
+    RecordReader* reader = nullptr;
+    const ProtocolResult r = receive(type, reader);
+    if (!r.ok()) return peer_failed_ ? r.error : "";
+  }
+  return "";
+}
+
 void StepChannel::send_failure(const std::string& message) {
   // Encoded aside rather than in place: try_send must not wait for room, and a reservation
   // would.

@@ -98,6 +98,11 @@ class StepChannel {
   // Best effort: tells the peer why this side stops. Never waits.
   void send_failure(const std::string& message);
 
+  // After this side lost the peer while sending (it saw only "closed"): reads what the peer
+  // still left in the channel, up to a failure record, and returns the peer's reason ("" when
+  // it left none). Call only once the peer has stopped, or it waits for it.
+  std::string drain_for_failure();
+
   [[nodiscard]] Transport& transport() { return transport_; }
   // True once the peer has explained a failure with a failure record.
   [[nodiscard]] bool peer_failed() const { return peer_failed_; }

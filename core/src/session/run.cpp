@@ -239,6 +239,11 @@ RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
       channel.transport().close();
     }
     const std::string network_error = link->finish();
+    // A send that found the channel closed does not see the reason the network half left in it
+    // before it stopped (e.g. it timed out waiting for this half): read it now that it is gone.
+    if (lost_peer && !channel.peer_failed()) {
+      if (std::string reason = channel.drain_for_failure(); !reason.empty()) robot_error = reason;
+    }
     if (const int signal = stop_signal(); signal != 0) {
       throw RunError(std::string("interrupted by ") + stop_signal_name(signal));
     }
