@@ -2,6 +2,7 @@
 // and a non-zero exit.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 
 #include "command_runner.hpp"
@@ -112,6 +113,31 @@ TEST(CommandLine, ARunDirectoryHoldingAnEarlierRunIsReplacedOnlyWhenAsked) {
   EXPECT_EQ(read_file(dir.path() / "notes.txt"), "mine\n");  // never removed
   EXPECT_NE(read_file(dir.path() / "run.log").find("--overwrite: removed the earlier run's"),
             std::string::npos);
+}
+
+// A disk that fills up at summary.json: the run fails, and run.log (when it could be written at
+// all) says so instead of ending like a finished run's.
+TEST(CommandLine, ADiskFullAtTheSummaryLeavesNoLogSayingFinished) {
+  TempDir dir;
+  const auto mount_point = dir.path() / "tiny";
+  std::filesystem::create_directories(mount_point);
+  // Two pages: the resolved scenario takes one, summary.json would take the other.
+  if (std::system(
+          ("mount -t tmpfs -o size=8k tmpfs " + mount_point.string() + " 2>/dev/null").c_str()) !=
+      0) {
+    GTEST_SKIP() << "cannot mount a small tmpfs here (needs root): the disk-full case is untested";
+  }
+  const auto result = run_swarmnet(
+      "run --set duration_s=1 --set output.packet_trace=false --set output.mobility_trace=false "
+      "--set output.traffic_schedule=false -q --out " +
+      (mount_point / "run").string());
+  const bool has_summary = std::filesystem::exists(mount_point / "run" / "summary.json");
+  const std::string log = read_file(mount_point / "run" / "run.log");
+  std::system(("umount " + mount_point.string()).c_str());
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find("No space left on device"), std::string::npos) << result.output;
+  EXPECT_FALSE(has_summary);
+  EXPECT_EQ(log.find("finished:"), std::string::npos) << log;
 }
 
 }  // namespace
