@@ -71,12 +71,12 @@ void add_scenario_options(CLI::App* command, ScenarioArguments& args, bool with_
     command->add_option("--out", args.out, "run directory (default runs/NAME-seedSEED)");
 }
 
-swarmnet::Scenario load(const ScenarioArguments& args) {
+// Validates the scenario; `loader` resolves its plugins and is the one the run creates them with.
+swarmnet::Scenario load(const ScenarioArguments& args, swarmnet::PluginLoader& loader) {
   swarmnet::ScenarioOverrides overrides;
   overrides.set = args.set;
   overrides.seed = args.seed;
   if (args.out) overrides.out_dir = *args.out;
-  swarmnet::PluginLoader loader;
   return swarmnet::load_scenario(args.file, overrides, loader);
 }
 
@@ -90,9 +90,10 @@ struct TransportArguments {
 int run_command(ScenarioArguments args, bool quiet, bool overwrite,
                 const TransportArguments& transport) {
   if (args.file.empty()) args.file = swarmnet::default_scenario_path().string();
+  swarmnet::PluginLoader loader;
   swarmnet::Scenario scenario;
   try {
-    scenario = load(args);
+    scenario = load(args, loader);
   } catch (const std::exception& error) {
     return fail(kBadInput, error.what());
   }
@@ -106,7 +107,7 @@ int run_command(ScenarioArguments args, bool quiet, bool overwrite,
     options.link.step_timeout =
         std::chrono::milliseconds(std::llround(transport.step_timeout_s * 1e3));
     swarmnet::install_stop_handlers();
-    const auto outcome = swarmnet::run_scenario(scenario, options);
+    const auto outcome = swarmnet::run_scenario(scenario, loader, options);
     if (!quiet) swarmnet::print_summary(stdout, outcome.summary, outcome.dir);
   } catch (const std::exception& error) {
     const int signal = swarmnet::stop_signal();
@@ -127,7 +128,8 @@ int clean_command(const std::vector<std::string>& dirs) {
 
 int validate_command(const ScenarioArguments& args) {
   try {
-    const swarmnet::Scenario scenario = load(args);
+    swarmnet::PluginLoader loader;
+    const swarmnet::Scenario scenario = load(args, loader);
     std::printf(
         "%s: valid scenario '%s': %u robots, %llu steps of %g s, %zu controller(s), "
         "routing %s over %s\n",

@@ -6,7 +6,7 @@
 // 256-byte unicast to a random node within 100 m per second, at random instants. Only the network
 // half runs (no robot half, no transport): the CPU time of NetworkSimulator::run_step is measured
 // with the process CPU clock. --sensing-floor-db sets network.phy.sensing_floor_db (quiet
-// signals, network/phy.hpp; default: the scenario default, exact).
+// signals, network/phy.hpp; default: the settings default, exact).
 //
 //   channel_scaling [--nodes 50,200,800,3200] [--sim-s 10] [--no-cutoff] [--sensing-floor-db D]
 //                   [--out results.json]
@@ -23,8 +23,8 @@
 
 #include "network/network_simulator.hpp"
 #include "outputs/run_summary.hpp"
+#include "plugin/default_plugin_choice.hpp"
 #include "plugin/plugin_loader.hpp"
-#include "scenario/default_plugin_choice.hpp"
 #include "swarmnet/random.hpp"
 
 namespace {
@@ -39,23 +39,21 @@ double cpu_seconds() {
 
 nlohmann::ordered_json run(PluginLoader& loader, std::uint32_t nodes, double sim_s, bool cutoff,
                            double sensing_floor_db) {
-  Scenario scenario;
-  scenario.name = "channel-scaling";
-  scenario.seed = 1;
-  scenario.step_s = 0.1;
-  scenario.duration_s = sim_s;
+  NetworkSettings settings;
+  settings.seed = 1;
+  settings.step_s = 0.1;
   const double side = std::sqrt(nodes * 5000.0);
-  scenario.arena.width_m = side;
-  scenario.arena.height_m = side;
-  scenario.robots.count = nodes;
-  scenario.network.propagation = {
+  settings.arena.width_m = side;
+  settings.arena.height_m = side;
+  settings.nodes = nodes;
+  settings.network.propagation = {
       default_plugin_choice(loader, "log_distance", PluginKind::propagation)};
-  scenario.network.phy.model = PhyModel::sinr;
-  scenario.network.phy.tx_power_dbm = -82.0 + 46.6777 + 30.0 * std::log10(120.0);
-  scenario.network.phy.sensing_floor_db = sensing_floor_db;
-  scenario.network.channel.cutoff = cutoff;
-  scenario.network.mac = default_plugin_choice(loader, "dcf80211", PluginKind::mac);
-  scenario.network.routing = default_plugin_choice(loader, "direct", PluginKind::routing);
+  settings.network.phy.model = PhyModel::sinr;
+  settings.network.phy.tx_power_dbm = -82.0 + 46.6777 + 30.0 * std::log10(120.0);
+  settings.network.phy.sensing_floor_db = sensing_floor_db;
+  settings.network.channel.cutoff = cutoff;
+  settings.network.mac = default_plugin_choice(loader, "dcf80211", PluginKind::mac);
+  settings.network.routing = default_plugin_choice(loader, "direct", PluginKind::routing);
 
   RandomStream random(derive_seed(42, {nodes}));
   std::vector<Vec2> positions;
@@ -69,9 +67,9 @@ nlohmann::ordered_json run(PluginLoader& loader, std::uint32_t nodes, double sim
     }
   }
 
-  NetworkSimulator simulator(scenario, loader, nullptr);
-  const auto steps = static_cast<std::uint64_t>(std::llround(sim_s / scenario.step_s));
-  const SimTime step = from_seconds(scenario.step_s);
+  NetworkSimulator simulator(settings, loader, nullptr);
+  const auto steps = static_cast<std::uint64_t>(std::llround(sim_s / settings.step_s));
+  const SimTime step = from_seconds(settings.step_s);
   std::uint64_t next_id = 0;
   double cpu = 0.0;
   StepResult result;

@@ -89,8 +89,12 @@ void serve(Transport& transport, Service service) {
   std::vector<std::byte> record;
   if (service == Service::step) {
     StepChannel channel(transport, "the benchmark");
+    // The benchmark's hello carries the swarm size as its text, in place of a scenario.
     Hello hello;
-    if (!channel.receive_hello(hello).ok() || !channel.send_welcome(hello).ok()) return;
+    if (!channel.receive_hello(hello).ok()) return;
+    const Welcome welcome{1, static_cast<std::uint32_t>(std::stoul(hello.scenario_yaml)),
+                          100'000'000};
+    if (!channel.send_welcome(welcome).ok()) return;
     StepBatch batch;
     StepResult result;
     bool finished = false;
@@ -218,9 +222,9 @@ void StepExchange(benchmark::State& state, Kind kind) {
   Peer peer(kind, Service::step);
   StepChannel channel(peer.transport(), "the benchmark peer");
   Hello hello;
-  hello.robots = robots;
-  hello.step_ns = 100'000'000;
-  if (!channel.send_hello(hello).ok() || !channel.receive_welcome(hello).ok()) {
+  hello.scenario_yaml = std::to_string(robots);
+  if (!channel.send_hello(hello).ok() ||
+      !channel.receive_welcome(Welcome{1, robots, 100'000'000}).ok()) {
     state.SkipWithError("handshake failed");
     return;
   }
@@ -242,10 +246,8 @@ void StepCodec(benchmark::State& state) {
   InprocChannel link(kRingBytes, bench_policy());
   StepChannel robot(link.robot_end(), "the network end");
   StepChannel network(link.network_end(), "the robot end");
-  Hello hello;
-  hello.robots = robots;
-  robot.fix_limits(hello);
-  network.fix_limits(hello);
+  robot.fix_limits(Welcome{1, robots, 100'000'000});
+  network.fix_limits(Welcome{1, robots, 100'000'000});
   StepBatch batch = make_batch(robots);
   StepResult result = make_result(batch);
   StepBatch received_batch;

@@ -15,8 +15,8 @@ constexpr double kSpacingM = 100.0;
 
 class AodvNetwork : public ::testing::Test {
  protected:
-  Scenario scenario(std::uint32_t robots, const std::string& mac = "ideal_mac") {
-    return test::make_scenario(loader_, robots, mac, "aodv");
+  NetworkSettings settings(std::uint32_t robots, const std::string& mac = "ideal_mac") {
+    return test::make_settings(loader_, robots, mac, "aodv");
   }
   PluginLoader loader_;
 };
@@ -35,7 +35,7 @@ void expect_control_counters_add_up(const nlohmann::ordered_json& report) {
 }
 
 TEST_F(AodvNetwork, DiscoveryOnALineHasTheExpectedLatencyAndHopCount) {
-  const Scenario sc = scenario(10);
+  const NetworkSettings sc = settings(10);
   // Three hops: found by the TTL 3 ring after the TTL 1 ring's 240 ms timeout.
   auto out = test::run(
       sc, loader_,
@@ -67,7 +67,7 @@ TEST_F(AodvNetwork, DiscoveryOnALineHasTheExpectedLatencyAndHopCount) {
 }
 
 TEST_F(AodvNetwork, LaterMessagesUseTheRouteWithoutNewDiscovery) {
-  const Scenario sc = scenario(5);
+  const NetworkSettings sc = settings(5);
   auto batches = test::fixed_batches(sc, test::line_positions(5, kSpacingM), 20, {});
   for (std::uint64_t step = 0; step < 10; ++step) {
     batches[step].messages.push_back(test::message(step, 0, 4));
@@ -87,7 +87,7 @@ TEST_F(AodvNetwork, LaterMessagesUseTheRouteWithoutNewDiscovery) {
 TEST_F(AodvNetwork, RepairAfterTheMiddleRobotLeavesOverIdealMac) {
   // 0 and 2 are 200 m apart; relay 1 sits between them, spare 3 far away. At 2 s the relay
   // leaves and the spare takes its place. ideal_mac reports nothing: HELLO loss breaks the link.
-  const Scenario sc = scenario(4);
+  const NetworkSettings sc = settings(4);
   std::vector<Vec2> before{{10, 500}, {110, 500}, {210, 500}, {900, 900}};
   std::vector<Vec2> after{{10, 500}, {110, 100}, {210, 500}, {110, 560}};
   auto batches = test::fixed_batches(sc, before, 100, {});
@@ -112,7 +112,7 @@ TEST_F(AodvNetwork, RepairAfterTheMiddleRobotLeavesOverIdealMac) {
 }
 
 TEST_F(AodvNetwork, UnreachableDestinationDropsAreReportedByReason) {
-  Scenario sc = scenario(3);
+  NetworkSettings sc = settings(3);
   test::set_param(sc.network.routing, "max_queue_len", std::int64_t{2});
   std::vector<Vec2> positions{{10, 10}, {110, 10}, {900, 900}};
   auto batches = test::fixed_batches(
@@ -130,7 +130,7 @@ TEST_F(AodvNetwork, RunsOverDcf80211WhenItIsBuilt) {
   } catch (const PluginError&) {
     GTEST_SKIP() << "dcf80211 is not built";
   }
-  const Scenario sc = scenario(6, "dcf80211");
+  const NetworkSettings sc = settings(6, "dcf80211");
   auto batches = test::fixed_batches(sc, test::line_positions(6, kSpacingM), 30, {});
   for (std::uint64_t step = 0; step < 10; ++step) {
     batches[step].messages.push_back(test::message(step, 0, 5));

@@ -109,13 +109,10 @@ class RemoteNetworkHalf : public ::testing::Test {
     if (std::string why = authenticate_to_acceptor(transport, secret); !why.empty()) return why;
     StepChannel channel(transport, "the network half");
     Hello hello;
-    hello.seed = 1;
-    hello.robots = 2;
-    hello.step_ns = 100'000'000;
     hello.scenario_yaml = scenario;
     hello.run_dir = run_dir;
     if (auto r = channel.send_hello(hello); !r.ok()) return r.error;
-    if (auto r = channel.receive_welcome(hello); !r.ok()) return r.error;
+    if (auto r = channel.receive_welcome(Welcome{1, 2, 100'000'000}); !r.ok()) return r.error;
     if (auto r = channel.send_finish(); !r.ok()) return r.error;
     NetworkReport report;
     if (auto r = channel.receive_report(report); !r.ok()) return r.error;

@@ -12,10 +12,10 @@ namespace {
 
 TEST(NetworkApplication, MessageToItselfIsDeliveredAtOnce) {
   PluginLoader loader;
-  const Scenario scenario = test::make_scenario(loader, 3);
+  const NetworkSettings settings = test::make_settings(loader, 3);
   const auto out = test::run(
-      scenario, loader,
-      test::fixed_batches(scenario, test::line_positions(3, 50.0), 1, {test::message(4, 2, 2)}));
+      settings, loader,
+      test::fixed_batches(settings, test::line_positions(3, 50.0), 1, {test::message(4, 2, 2)}));
   ASSERT_EQ(out.deliveries.size(), 1U);
   EXPECT_EQ(out.deliveries[0].receiver, 2U);
   EXPECT_EQ(out.deliveries[0].hops, 0U);

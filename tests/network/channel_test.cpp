@@ -14,23 +14,23 @@ namespace swarmnet {
 namespace {
 
 using test::choose;
-using test::make_scenario;
+using test::make_settings;
 using test::set_param;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-double scenario_cutoff(const Scenario& scenario, PluginLoader& loader) {
-  const PropagationChain chain(scenario, loader);
-  return cutoff_distance_m(chain, scenario.network.phy.tx_power_dbm,
-                           scenario.network.phy.rx_sensitivity_dbm);
+double scenario_cutoff(const NetworkSettings& settings, PluginLoader& loader) {
+  const PropagationChain chain(settings, loader);
+  return cutoff_distance_m(chain, settings.network.phy.tx_power_dbm,
+                           settings.network.phy.rx_sensitivity_dbm);
 }
 
 TEST(NetworkChannel, CutoffDistanceOfDiskIsItsRange) {
   PluginLoader loader;
-  Scenario scenario = make_scenario(loader, 2);
+  NetworkSettings settings = make_settings(loader, 2);
   for (const double range : {0.5, 1.0, 37.25, 120.0, 999.0}) {
-    set_param(scenario.network.propagation[0], "range_m", range);
-    const double cutoff = scenario_cutoff(scenario, loader);
+    set_param(settings.network.propagation[0], "range_m", range);
+    const double cutoff = scenario_cutoff(settings, loader);
     EXPECT_GT(cutoff, range);
     EXPECT_LE(cutoff, range + kCutoffResolutionM);
   }
@@ -38,56 +38,56 @@ TEST(NetworkChannel, CutoffDistanceOfDiskIsItsRange) {
 
 TEST(NetworkChannel, ChainedBoundsTakeTheShortestRange) {
   PluginLoader loader;
-  Scenario scenario = make_scenario(loader, 2);
+  NetworkSettings settings = make_settings(loader, 2);
   PluginChoice shorter = choose(loader, "disk", PluginKind::propagation);
   set_param(shorter, "range_m", 80.0);
-  scenario.network.propagation.push_back(shorter);
-  const double cutoff = scenario_cutoff(scenario, loader);
+  settings.network.propagation.push_back(shorter);
+  const double cutoff = scenario_cutoff(settings, loader);
   EXPECT_GT(cutoff, 80.0);
   EXPECT_LE(cutoff, 80.0 + kCutoffResolutionM);
 }
 
 TEST(NetworkChannel, UnlimitedOrInfiniteRangeHasNoCutoff) {
   PluginLoader loader;
-  Scenario scenario = make_scenario(loader, 2);
-  set_param(scenario.network.propagation[0], "unlimited", true);
-  EXPECT_EQ(scenario_cutoff(scenario, loader), kInf);
+  NetworkSettings settings = make_settings(loader, 2);
+  set_param(settings.network.propagation[0], "unlimited", true);
+  EXPECT_EQ(scenario_cutoff(settings, loader), kInf);
 
-  scenario = make_scenario(loader, 2);
-  set_param(scenario.network.propagation[0], "range_m", kInf);
-  EXPECT_EQ(scenario_cutoff(scenario, loader), kInf);
-  const NetworkSimulator simulator(scenario, loader, nullptr);
+  settings = make_settings(loader, 2);
+  set_param(settings.network.propagation[0], "range_m", kInf);
+  EXPECT_EQ(scenario_cutoff(settings, loader), kInf);
+  const NetworkSimulator simulator(settings, loader, nullptr);
   EXPECT_FALSE(simulator.channel().uses_grid());  // nothing to cut: every node is visited
 }
 
 TEST(NetworkChannel, NothingIsAudibleWhenTheSensitivityExceedsTheTxPower) {
   PluginLoader loader;
-  Scenario scenario = make_scenario(loader, 2);
-  scenario.network.phy.rx_sensitivity_dbm = scenario.network.phy.tx_power_dbm + 1.0;
-  EXPECT_EQ(scenario_cutoff(scenario, loader), 0.0);
+  NetworkSettings settings = make_settings(loader, 2);
+  settings.network.phy.rx_sensitivity_dbm = settings.network.phy.tx_power_dbm + 1.0;
+  EXPECT_EQ(scenario_cutoff(settings, loader), 0.0);
 }
 
 TEST(NetworkChannel, SimulatorUsesTheGridOnlyWhenTheCutoffIsOn) {
   PluginLoader loader;
-  Scenario scenario = make_scenario(loader, 3);
+  NetworkSettings settings = make_settings(loader, 3);
   {
-    const NetworkSimulator simulator(scenario, loader, nullptr);
+    const NetworkSimulator simulator(settings, loader, nullptr);
     EXPECT_TRUE(simulator.channel().uses_grid());
     EXPECT_LE(std::abs(simulator.channel().cutoff_m() - 120.0), kCutoffResolutionM);
   }
-  scenario.network.channel.cutoff = false;
-  const NetworkSimulator simulator(scenario, loader, nullptr);
+  settings.network.channel.cutoff = false;
+  const NetworkSimulator simulator(settings, loader, nullptr);
   EXPECT_FALSE(simulator.channel().uses_grid());
 }
 
 TEST(NetworkChannel, OnlyNodesWithinRangeHearAFrame) {
   PluginLoader loader;
-  Scenario scenario = make_scenario(loader, 4, "ideal_mac", "direct");
+  NetworkSettings settings = make_settings(loader, 4, "ideal_mac", "direct");
   // Distances from node 0: 100 m, exactly 120 m (the disk is closed), 120.5 m.
   const std::vector<Vec2> positions = {{10, 50}, {110, 50}, {130, 50}, {130.5, 50}};
   const auto out =
-      test::run(scenario, loader,
-                test::fixed_batches(scenario, positions, 2, {test::message(0, 0, kBroadcast)}));
+      test::run(settings, loader,
+                test::fixed_batches(settings, positions, 2, {test::message(0, 0, kBroadcast)}));
   ASSERT_EQ(out.deliveries.size(), 2U);
   EXPECT_EQ(out.deliveries[0].receiver, 1U);
   EXPECT_EQ(out.deliveries[1].receiver, 2U);
@@ -109,19 +109,19 @@ bool same_deliveries(const std::vector<Delivery>& a, const std::vector<Delivery>
 
 TEST(NetworkChannel, CutoffOnAndOffGiveIdenticalResults) {
   PluginLoader loader;
-  Scenario scenario = make_scenario(loader, 80);
-  scenario.arena.width_m = 600.0;
-  scenario.arena.height_m = 600.0;
-  set_param(scenario.network.propagation[0], "range_m", 100.0);
-  set_param(scenario.network.propagation[0], "probability", 0.8);
-  const auto batches = test::random_batches(scenario, 7, 30, 6, 0.25, 2.0);
+  NetworkSettings settings = make_settings(loader, 80);
+  settings.arena.width_m = 600.0;
+  settings.arena.height_m = 600.0;
+  set_param(settings.network.propagation[0], "range_m", 100.0);
+  set_param(settings.network.propagation[0], "probability", 0.8);
+  const auto batches = test::random_batches(settings, 7, 30, 6, 0.25, 2.0);
 
-  scenario.network.channel.cutoff = true;
-  const auto with_cutoff = test::run(scenario, loader, batches);
-  scenario.network.channel.cutoff = false;
-  const auto without_cutoff = test::run(scenario, loader, batches);
+  settings.network.channel.cutoff = true;
+  const auto with_cutoff = test::run(settings, loader, batches);
+  settings.network.channel.cutoff = false;
+  const auto without_cutoff = test::run(settings, loader, batches);
 
-  // The scenario exercises multi-hop flooding and lossy links, not a trivial case.
+  // The settings exercises multi-hop flooding and lossy links, not a trivial case.
   ASSERT_GT(with_cutoff.deliveries.size(), 100U);
   EXPECT_GT(with_cutoff.report["hops_mean"].get<double>(), 1.5);
   EXPECT_GT(with_cutoff.report["packets"]["in_flight"].get<int>(), 0);
@@ -138,18 +138,18 @@ TEST(NetworkDisk, LossyLinkDeliversAtItsProbability) {
   // rate. The seed is fixed, so the test is deterministic; the tolerance of 4 standard deviations
   // (0.0447) would be exceeded by a correct model with probability 6e-5 for a random seed.
   PluginLoader loader;
-  Scenario scenario = make_scenario(loader, 2, "ideal_mac", "direct");
-  set_param(scenario.network.propagation[0], "probability", 0.5);
+  NetworkSettings settings = make_settings(loader, 2, "ideal_mac", "direct");
+  set_param(settings.network.propagation[0], "probability", 0.5);
   constexpr std::uint64_t kSteps = 100;
   constexpr std::uint64_t kPerStep = 20;
-  auto batches = test::fixed_batches(scenario, {{10, 50}, {60, 50}}, kSteps + 1, {});
+  auto batches = test::fixed_batches(settings, {{10, 50}, {60, 50}}, kSteps + 1, {});
   std::uint64_t id = 0;
   for (std::uint64_t s = 0; s < kSteps; ++s) {
     for (std::uint64_t k = 0; k < kPerStep; ++k) {
       batches[s].messages.push_back(test::message(id++, 0, 1, 64));
     }
   }
-  const auto out = test::run(scenario, loader, batches);
+  const auto out = test::run(settings, loader, batches);
   const double n = static_cast<double>(kSteps * kPerStep);
   EXPECT_EQ(out.report["packets"]["sent"].get<double>(), n);
   EXPECT_EQ(out.report["packets"]["dropped"]["queue_full"], 0);

@@ -1,4 +1,4 @@
-// A run is a pure function of its inputs: same scenario and batches, same bytes out.
+// A run is a pure function of its inputs: same settings and batches, same bytes out.
 #include <gtest/gtest.h>
 
 #include "network/network_simulator.hpp"
@@ -8,20 +8,20 @@
 namespace swarmnet {
 namespace {
 
-Scenario random_scenario(PluginLoader& loader) {
-  Scenario scenario = test::make_scenario(loader, 60);
-  scenario.arena.width_m = 500.0;
-  scenario.arena.height_m = 500.0;
-  test::set_param(scenario.network.propagation[0], "probability", 0.7);
-  return scenario;
+NetworkSettings random_settings(PluginLoader& loader) {
+  NetworkSettings settings = test::make_settings(loader, 60);
+  settings.arena.width_m = 500.0;
+  settings.arena.height_m = 500.0;
+  test::set_param(settings.network.propagation[0], "probability", 0.7);
+  return settings;
 }
 
 TEST(NetworkDeterminism, SameInputsGiveIdenticalTraceAndReport) {
   PluginLoader loader;
-  const Scenario scenario = random_scenario(loader);
-  const auto batches = test::random_batches(scenario, 3, 25, 8, 0.3, 3.0);
-  const auto first = test::run(scenario, loader, batches);
-  const auto second = test::run(scenario, loader, batches);
+  const NetworkSettings settings = random_settings(loader);
+  const auto batches = test::random_batches(settings, 3, 25, 8, 0.3, 3.0);
+  const auto first = test::run(settings, loader, batches);
+  const auto second = test::run(settings, loader, batches);
   ASSERT_GT(first.deliveries.size(), 50U);
   EXPECT_TRUE(first.trace == second.trace) << "packet traces differ";
   EXPECT_EQ(first.report.dump(), second.report.dump());
@@ -30,18 +30,18 @@ TEST(NetworkDeterminism, SameInputsGiveIdenticalTraceAndReport) {
 
 TEST(NetworkDeterminism, TheSeedChangesTheRun) {
   PluginLoader loader;
-  Scenario scenario = random_scenario(loader);
-  const auto batches = test::random_batches(scenario, 3, 10, 8, 0.3, 3.0);
-  const auto first = test::run(scenario, loader, batches);
-  scenario.seed = 2;
-  const auto second = test::run(scenario, loader, batches);
+  NetworkSettings settings = random_settings(loader);
+  const auto batches = test::random_batches(settings, 3, 10, 8, 0.3, 3.0);
+  const auto first = test::run(settings, loader, batches);
+  settings.seed = 2;
+  const auto second = test::run(settings, loader, batches);
   EXPECT_NE(first.trace, second.trace);
 }
 
 TEST(NetworkDeterminism, StepEventCountsAddUpToTheReport) {
   PluginLoader loader;
-  const Scenario scenario = random_scenario(loader);
-  const auto out = test::run(scenario, loader, test::random_batches(scenario, 5, 10, 8, 0.3, 3.0));
+  const NetworkSettings settings = random_settings(loader);
+  const auto out = test::run(settings, loader, test::random_batches(settings, 5, 10, 8, 0.3, 3.0));
   std::uint64_t total = 0;
   for (const std::uint64_t events : out.events_per_step) total += events;
   EXPECT_GT(total, 0U);
@@ -50,8 +50,8 @@ TEST(NetworkDeterminism, StepEventCountsAddUpToTheReport) {
 
 TEST(NetworkSimulator, ReportHasEveryKeyWithZerosIncluded) {
   PluginLoader loader;
-  const Scenario scenario = test::make_scenario(loader, 2);
-  const NetworkSimulator simulator(scenario, loader, nullptr);
+  const NetworkSettings settings = test::make_settings(loader, 2);
+  const NetworkSimulator simulator(settings, loader, nullptr);
   const auto report = network_report_json(simulator.report());
   const char* keys[] = {"packets", "pdr", "delay_s", "hops_mean", "mac", "routing", "events"};
   std::size_t i = 0;
@@ -80,10 +80,10 @@ TEST(NetworkSimulator, ReportHasEveryKeyWithZerosIncluded) {
 
 TEST(NetworkSimulator, RefusesMalformedBatches) {
   PluginLoader loader;
-  const Scenario scenario = test::make_scenario(loader, 3);
-  NetworkSimulator simulator(scenario, loader, nullptr);
+  const NetworkSettings settings = test::make_settings(loader, 3);
+  NetworkSimulator simulator(settings, loader, nullptr);
   StepResult result;
-  auto batches = test::fixed_batches(scenario, test::line_positions(3, 50.0), 2, {});
+  auto batches = test::fixed_batches(settings, test::line_positions(3, 50.0), 2, {});
   StepBatch wrong_count = batches[0];
   wrong_count.positions.pop_back();
   EXPECT_THROW(simulator.run_step(wrong_count, result), std::invalid_argument);

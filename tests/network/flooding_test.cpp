@@ -12,16 +12,16 @@ constexpr double kSpacingM = 100.0;
 
 class NetworkFlooding : public ::testing::Test {
  protected:
-  NetworkFlooding() : scenario_(test::make_scenario(loader_, kLine)) {}
+  NetworkFlooding() : settings_(test::make_settings(loader_, kLine)) {}
 
   test::RunOutput run_line(AppMessage message) {
-    return test::run(scenario_, loader_,
-                     test::fixed_batches(scenario_, test::line_positions(kLine, kSpacingM), 10,
+    return test::run(settings_, loader_,
+                     test::fixed_batches(settings_, test::line_positions(kLine, kSpacingM), 10,
                                          {std::move(message)}));
   }
 
   PluginLoader loader_;
-  Scenario scenario_;
+  NetworkSettings settings_;
 };
 
 TEST_F(NetworkFlooding, UnicastCrossesTheLineWithEveryRelayForwardingOnce) {
@@ -82,7 +82,7 @@ TEST_F(NetworkFlooding, BroadcastIsDeliveredAndForwardedOnceByEveryNode) {
 }
 
 TEST_F(NetworkFlooding, TtlShorterThanTheLineStopsTheFlood) {
-  test::set_param(scenario_.network.routing, "ttl", std::int64_t{3});
+  test::set_param(settings_.network.routing, "ttl", std::int64_t{3});
   const auto out = run_line(test::message(0, 0, kLine - 1));
   EXPECT_TRUE(out.deliveries.empty());
 
@@ -104,8 +104,8 @@ TEST_F(NetworkFlooding, TtlShorterThanTheLineStopsTheFlood) {
 }
 
 TEST_F(NetworkFlooding, RelayJitterStaysWithinItsBound) {
-  test::set_param(scenario_.network.routing, "jitter_max_s", 0.002);
-  test::set_param(scenario_.network.mac, "bitrate_bps", 1.0e9);  // airtime ~1 us per hop
+  test::set_param(settings_.network.routing, "jitter_max_s", 0.002);
+  test::set_param(settings_.network.mac, "bitrate_bps", 1.0e9);  // airtime ~1 us per hop
   const auto out = run_line(test::message(0, 0, kLine - 1));
   ASSERT_EQ(out.deliveries.size(), 1U);
   // 9 transmissions of ~1.3 us plus 8 relay jitters of at most 2 ms.

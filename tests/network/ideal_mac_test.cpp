@@ -16,7 +16,7 @@ constexpr std::uint32_t kFrameBytes = 28 + kPacketBytes;                     // 
 
 class NetworkIdealMac : public ::testing::Test {
  protected:
-  NetworkIdealMac() : scenario_(test::make_scenario(loader_, 3, "ideal_mac", "direct")) {
+  NetworkIdealMac() : scenario_(test::make_settings(loader_, 3, "ideal_mac", "direct")) {
     test::set_param(scenario_.network.propagation[0], "range_m", 1000.0);
   }
 
@@ -25,7 +25,7 @@ class NetworkIdealMac : public ::testing::Test {
   }
 
   PluginLoader loader_;
-  Scenario scenario_;
+  NetworkSettings scenario_;
   // Node 1 is 300 m from node 0; node 2 is 200 m away, also in range.
   std::vector<Vec2> positions_ = {{10, 50}, {310, 50}, {10, 250}};
 };

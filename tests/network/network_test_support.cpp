@@ -8,7 +8,7 @@
 #include "network/network_simulator.hpp"
 #include "network/packet_trace.hpp"
 #include "outputs/run_summary.hpp"
-#include "scenario/default_plugin_choice.hpp"
+#include "plugin/default_plugin_choice.hpp"
 #include "swarmnet/random.hpp"
 
 namespace swarmnet::test {
@@ -24,20 +24,18 @@ void set_param(PluginChoice& choice, const std::string& name, ParamValue value) 
   choice.params.set(name, std::move(value));
 }
 
-Scenario make_scenario(PluginLoader& loader, std::uint32_t robots, const std::string& mac,
-                       const std::string& routing) {
-  Scenario scenario;
-  scenario.name = "network-test";
-  scenario.seed = 1;
-  scenario.step_s = 0.1;
-  scenario.duration_s = 10.0;
-  scenario.arena.width_m = 1000.0;
-  scenario.arena.height_m = 1000.0;
-  scenario.robots.count = robots;
-  scenario.network.propagation = {choose(loader, "disk", PluginKind::propagation)};
-  scenario.network.mac = choose(loader, mac, PluginKind::mac);
-  scenario.network.routing = choose(loader, routing, PluginKind::routing);
-  return scenario;
+NetworkSettings make_settings(PluginLoader& loader, std::uint32_t robots, const std::string& mac,
+                              const std::string& routing) {
+  NetworkSettings settings;
+  settings.seed = 1;
+  settings.step_s = 0.1;
+  settings.arena.width_m = 1000.0;
+  settings.arena.height_m = 1000.0;
+  settings.nodes = robots;
+  settings.network.propagation = {choose(loader, "disk", PluginKind::propagation)};
+  settings.network.mac = choose(loader, mac, PluginKind::mac);
+  settings.network.routing = choose(loader, routing, PluginKind::routing);
+  return settings;
 }
 
 std::vector<Vec2> line_positions(std::uint32_t robots, double spacing_m) {
@@ -57,10 +55,11 @@ AppMessage message(std::uint64_t id, RobotId source, RobotId destination,
   return m;
 }
 
-std::vector<StepBatch> fixed_batches(const Scenario& scenario, const std::vector<Vec2>& positions,
-                                     std::uint64_t steps, std::vector<AppMessage> messages) {
+std::vector<StepBatch> fixed_batches(const NetworkSettings& settings,
+                                     const std::vector<Vec2>& positions, std::uint64_t steps,
+                                     std::vector<AppMessage> messages) {
   std::vector<StepBatch> batches(steps);
-  const SimTime step = from_seconds(scenario.step_s);
+  const SimTime step = from_seconds(settings.step_s);
   for (std::uint64_t i = 0; i < steps; ++i) {
     batches[i].step = i;
     batches[i].start = step * static_cast<std::int64_t>(i);
@@ -70,18 +69,18 @@ std::vector<StepBatch> fixed_batches(const Scenario& scenario, const std::vector
   return batches;
 }
 
-std::vector<StepBatch> random_batches(const Scenario& scenario, std::uint64_t traffic_seed,
+std::vector<StepBatch> random_batches(const NetworkSettings& settings, std::uint64_t traffic_seed,
                                       std::uint64_t steps, std::uint32_t messages_per_step,
                                       double broadcast_fraction, double move_m) {
   RandomStream random(traffic_seed);
-  const std::uint32_t n = scenario.robots.count;
-  const double w = scenario.arena.width_m;
-  const double h = scenario.arena.height_m;
+  const std::uint32_t n = settings.nodes;
+  const double w = settings.arena.width_m;
+  const double h = settings.arena.height_m;
   std::vector<Vec2> positions;
   for (std::uint32_t i = 0; i < n; ++i) {
     positions.emplace_back(random.uniform(0.0, w), random.uniform(0.0, h));
   }
-  const SimTime step = from_seconds(scenario.step_s);
+  const SimTime step = from_seconds(settings.step_s);
   std::vector<StepBatch> batches(steps);
   std::uint64_t next_id = 0;
   for (std::uint64_t s = 0; s < steps; ++s) {
@@ -105,12 +104,12 @@ std::vector<StepBatch> random_batches(const Scenario& scenario, std::uint64_t tr
   return batches;
 }
 
-RunOutput run(const Scenario& scenario, PluginLoader& loader,
+RunOutput run(const NetworkSettings& settings, PluginLoader& loader,
               const std::vector<StepBatch>& batches) {
   RunOutput output;
   std::ostringstream trace;
   {
-    NetworkSimulator simulator(scenario, loader, &trace);
+    NetworkSimulator simulator(settings, loader, &trace);
     StepResult result;
     for (const StepBatch& batch : batches) {
       simulator.run_step(batch, result);

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "network/network_settings.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "protocol/step_data.hpp"
-#include "scenario/scenario.hpp"
 #include "swarmnet/params.hpp"
 
 namespace swarmnet::test {
@@ -20,9 +20,9 @@ void set_param(PluginChoice& choice, const std::string& name, ParamValue value);
 
 // `robots` robots in a 1000 x 1000 m arena, disk propagation (default range 120 m), the given
 // MAC and routing with default parameters, seed 1, 0.1 s steps.
-Scenario make_scenario(PluginLoader& loader, std::uint32_t robots,
-                       const std::string& mac = "ideal_mac",
-                       const std::string& routing = "flooding");
+NetworkSettings make_settings(PluginLoader& loader, std::uint32_t robots,
+                              const std::string& mac = "ideal_mac",
+                              const std::string& routing = "flooding");
 
 // Robots on the x axis at y = 50, `spacing_m` apart, starting at x = 10.
 std::vector<Vec2> line_positions(std::uint32_t robots, double spacing_m);
@@ -31,13 +31,14 @@ AppMessage message(std::uint64_t id, RobotId source, RobotId destination,
                    std::size_t payload_bytes = 100);
 
 // Batches for `steps` steps with fixed positions; `messages` go into step 0.
-std::vector<StepBatch> fixed_batches(const Scenario& scenario, const std::vector<Vec2>& positions,
-                                     std::uint64_t steps, std::vector<AppMessage> messages);
+std::vector<StepBatch> fixed_batches(const NetworkSettings& settings,
+                                     const std::vector<Vec2>& positions, std::uint64_t steps,
+                                     std::vector<AppMessage> messages);
 
 // Random motion and traffic: robots start uniformly in the arena and random-walk up to `move_m`
 // per step; each step carries `messages_per_step` messages from random sources, a fraction
 // `broadcast_fraction` of them broadcast, payloads of 16..256 bytes.
-std::vector<StepBatch> random_batches(const Scenario& scenario, std::uint64_t traffic_seed,
+std::vector<StepBatch> random_batches(const NetworkSettings& settings, std::uint64_t traffic_seed,
                                       std::uint64_t steps, std::uint32_t messages_per_step,
                                       double broadcast_fraction, double move_m);
 
@@ -49,7 +50,7 @@ struct RunOutput {
 };
 
 // A whole run: constructs a NetworkSimulator, runs every batch, finishes.
-RunOutput run(const Scenario& scenario, PluginLoader& loader,
+RunOutput run(const NetworkSettings& settings, PluginLoader& loader,
               const std::vector<StepBatch>& batches);
 
 struct TraceLine {

@@ -36,10 +36,9 @@ StepBatch sample_batch(std::uint32_t robots, std::uint32_t messages) {
 
 // Both ends as after a handshake for `robots` robots (the limits every count is checked against).
 void shake_hands(StepChannel& robot, StepChannel& network, std::uint32_t robots) {
-  Hello hello;
-  hello.robots = robots;
-  robot.fix_limits(hello);
-  network.fix_limits(hello);
+  const Welcome welcome{1, robots, 100'000'000};
+  robot.fix_limits(welcome);
+  network.fix_limits(welcome);
 }
 
 TEST(StepChannel, BatchRoundTripsAcrossChunks) {
@@ -192,30 +191,29 @@ TEST(StepChannel, PeerFailureAndCloseAreExplained) {
 
 Hello sample_hello() {
   Hello hello;
-  hello.seed = 9;
-  hello.robots = 40;
-  hello.step_ns = 100'000'000;
   hello.scenario_yaml = "name: x\n";
   hello.run_dir = "/tmp/run";
   return hello;
 }
 
-TEST(StepChannel, HandshakeExchangesTheInitialParameters) {
+constexpr Welcome kSampleWelcome{9, 40, 100'000'000};
+
+// The hello carries one description of the run, the scenario; the welcome says what the network
+// half made of it, and both ends then hold the limits it implies.
+TEST(StepChannel, HandshakeCarriesTheScenarioAndTheWelcomeFixesTheLimits) {
   InprocChannel link(std::uint64_t{1} << 16);
   StepChannel robot(link.robot_end(), "the network half");
   StepChannel network(link.network_end(), "the robot half");
-  const Hello sent = sample_hello();
-  ASSERT_TRUE(robot.send_hello(sent).ok());
+  ASSERT_TRUE(robot.send_hello(sample_hello()).ok());
   Hello got;
   ASSERT_TRUE(network.receive_hello(got).ok());
-  EXPECT_EQ(got.seed, 9U);
-  EXPECT_EQ(got.robots, 40U);
-  EXPECT_EQ(got.step_ns, 100'000'000);
   EXPECT_EQ(got.scenario_yaml, "name: x\n");
   EXPECT_EQ(got.run_dir, "/tmp/run");
-  ASSERT_TRUE(network.send_welcome(got).ok());
-  const auto r = robot.receive_welcome(sent);
+  ASSERT_TRUE(network.send_welcome(kSampleWelcome).ok());
+  const auto r = robot.receive_welcome(kSampleWelcome);
   EXPECT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(robot.limits().robots, 40U);
+  EXPECT_EQ(network.limits().robots, 40U);
 }
 
 TEST(StepChannel, ARecordLongerThanTheRingTakesIsAClearError) {
@@ -256,11 +254,10 @@ TEST(StepChannel, WelcomeThatDisagreesIsRefused) {
   InprocChannel link(std::uint64_t{1} << 16);
   StepChannel robot(link.robot_end(), "the network half");
   StepChannel network(link.network_end(), "the robot half");
-  const Hello sent = sample_hello();
-  Hello other = sent;
+  Welcome other = kSampleWelcome;
   other.robots = 41;
   ASSERT_TRUE(network.send_welcome(other).ok());
-  const auto r = robot.receive_welcome(sent);
+  const auto r = robot.receive_welcome(kSampleWelcome);
   EXPECT_NE(r.error.find("handshake mismatch"), std::string::npos) << r.error;
 }
 
@@ -290,9 +287,7 @@ class StepChannelBounds : public ::testing::Test {
 };
 
 TEST_F(StepChannelBounds, AStepBeginAnnouncingMillionsOfMessagesIsRefusedBeforeAllocating) {
-  Hello hello;
-  hello.robots = 10;
-  network_.fix_limits(hello);
+  network_.fix_limits(Welcome{1, 10, 100'000'000});
   feed(encode(RecordType::step_begin, std::uint64_t{0}, std::int64_t{0}, std::uint32_t{10},
               std::uint32_t{25'000'000}));
   StepBatch batch;
@@ -311,9 +306,7 @@ TEST_F(StepChannelBounds, AStepBeginWithAnotherSwarmSizeOrBeforeTheHandshakeIsRe
               std::uint32_t{0}));
   ProtocolResult r = network_.receive_batch(batch, finished);
   EXPECT_NE(r.error.find("before the handshake"), std::string::npos) << r.error;
-  Hello hello;
-  hello.robots = 10;
-  network_.fix_limits(hello);
+  network_.fix_limits(Welcome{1, 10, 100'000'000});
   feed(encode(RecordType::step_begin, std::uint64_t{0}, std::int64_t{0}, std::uint32_t{0xFFFFFFFF},
               std::uint32_t{0}));
   r = network_.receive_batch(batch, finished);
@@ -323,22 +316,18 @@ TEST_F(StepChannelBounds, AStepBeginWithAnotherSwarmSizeOrBeforeTheHandshakeIsRe
   EXPECT_EQ(batch.positions.capacity(), 0U);
 }
 
-TEST_F(StepChannelBounds, AHelloWithAnImpossibleSwarmIsRefused) {
-  Hello hello;
-  hello.robots = 0xFFFFFFFF;
-  hello.step_ns = 100'000'000;
-  ASSERT_TRUE(robot_.send_hello(hello).ok());
-  Hello got;
-  const ProtocolResult r = network_.receive_hello(got);
+// The swarm size comes from the scenario the network half validated (robots.count is at most
+// kMaxRobots there); its welcome never fixes an impossible one.
+TEST_F(StepChannelBounds, AWelcomeForAnImpossibleSwarmIsNeverSent) {
+  const ProtocolResult r = network_.send_welcome(Welcome{1, 0xFFFFFFFF, 100'000'000});
   EXPECT_EQ(r.io, IoStatus::corrupt);
-  EXPECT_NE(r.error.find("4294967295 robots in hello"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("4294967295 robots"), std::string::npos) << r.error;
+  EXPECT_EQ(network_.limits().robots, 0U);
 }
 
 TEST_F(StepChannelBounds, DeliveriesBeyondWhatTheSentMessagesCanProduceAreRefused) {
-  Hello hello;
-  hello.robots = 4;
-  robot_.fix_limits(hello);
-  network_.fix_limits(hello);
+  robot_.fix_limits(Welcome{1, 4, 100'000'000});
+  network_.fix_limits(Welcome{1, 4, 100'000'000});
   StepBatch batch = sample_batch(4, 0);
   batch.messages.push_back({1, 0, 2, {}});  // one unicast message: at most one delivery
   ASSERT_TRUE(robot_.send_batch(batch).ok());

@@ -19,14 +19,15 @@ namespace swarmnet {
 namespace {
 
 using test::make_choice;
-using test::make_scenario;
+using test::make_settings;
 using test::Overrides;
 
 class CbrTest : public ::testing::Test {
  protected:
   // `count` robots standing still (no motion controller), cbr as controller entry 0.
-  Scenario scenario(std::uint32_t count, const Overrides& overrides, std::uint64_t seed = 1) {
-    Scenario s = make_scenario(loader_, count, 30.0, 30.0, seed);
+  RobotSettings settings_for(std::uint32_t count, const Overrides& overrides,
+                             std::uint64_t seed = 1) {
+    RobotSettings s = make_settings(loader_, count, 30.0, 30.0, seed);
     s.robots.controllers.push_back(make_choice(loader_, "cbr", PluginKind::controller, overrides));
     return s;
   }
@@ -51,7 +52,7 @@ TEST_F(CbrTest, ExactlyRoundedFractionOfRobotsSend) {
   for (const auto& [count, fraction, expected] :
        std::vector<std::tuple<std::uint32_t, double, std::size_t>>{
            {50, 0.2, 10}, {37, 0.3, 11}, {10, 0.25, 3}, {20, 1.0, 20}, {20, 0.0, 0}}) {
-    RobotWorld world(scenario(count, {{"fraction", fraction}, {"start_s", 0.0}}), loader_);
+    RobotWorld world(settings_for(count, {{"fraction", fraction}, {"start_s", 0.0}}), loader_);
     EXPECT_EQ(sources(run(world, 20)).size(), expected) << count << " robots, " << fraction;
   }
 }
@@ -63,7 +64,7 @@ TEST_F(CbrTest, SameSenderSetInEveryInstanceAndSeedDependent) {
   const std::uint32_t n = 60;
   std::set<std::set<RobotId>> sets;
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    RobotWorld world(scenario(n, {{"fraction", 0.25}, {"start_s", 0.0}}, seed), loader_);
+    RobotWorld world(settings_for(n, {{"fraction", 0.25}, {"start_s", 0.0}}, seed), loader_);
     const auto actual = sources(run(world, 10));
     const std::uint64_t shared = derive_seed(seed, {hash_name("controller"), 0});
     const auto chosen = cbr::choose_senders(shared, n, 15, std::nullopt);
@@ -75,10 +76,10 @@ TEST_F(CbrTest, SameSenderSetInEveryInstanceAndSeedDependent) {
 
 TEST_F(CbrTest, EachSenderSendsAtTheConfiguredRateToOneOtherRobot) {
   const double rate = 7.0;  // not a multiple of 1 / step_s
-  RobotWorld world(scenario(40, {{"fraction", 0.5},
-                                 {"rate_hz", rate},
-                                 {"start_s", 2.0},
-                                 {"payload_bytes", std::int64_t{100}}}),
+  RobotWorld world(settings_for(40, {{"fraction", 0.5},
+                                     {"rate_hz", rate},
+                                     {"start_s", 2.0},
+                                     {"payload_bytes", std::int64_t{100}}}),
                    loader_);
   std::map<RobotId, std::vector<std::uint64_t>> steps_of;  // step index of each send
   std::map<RobotId, std::set<RobotId>> destinations;
@@ -111,7 +112,8 @@ TEST_F(CbrTest, EachSenderSendsAtTheConfiguredRateToOneOtherRobot) {
 }
 
 TEST_F(CbrTest, RatesAboveTheStepRateSendSeveralPerStep) {
-  RobotWorld world(scenario(10, {{"fraction", 0.1}, {"rate_hz", 25.0}, {"start_s", 0.0}}), loader_);
+  RobotWorld world(settings_for(10, {{"fraction", 0.1}, {"rate_hz", 25.0}, {"start_s", 0.0}}),
+                   loader_);
   std::vector<AppMessage> sent;
   std::size_t total = 0;
   for (int step = 0; step < 100; ++step) {
@@ -128,10 +130,10 @@ TEST_F(CbrTest, RatesAboveTheStepRateSendSeveralPerStep) {
 }
 
 TEST_F(CbrTest, PayloadCarriesTheSequenceNumberLittleEndian) {
-  RobotWorld world(scenario(5, {{"fraction", 0.2},
-                                {"rate_hz", 10.0},
-                                {"start_s", 0.0},
-                                {"payload_bytes", std::int64_t{32}}}),
+  RobotWorld world(settings_for(5, {{"fraction", 0.2},
+                                    {"rate_hz", 10.0},
+                                    {"start_s", 0.0},
+                                    {"payload_bytes", std::int64_t{32}}}),
                    loader_);
   const auto sent = run(world, 300);
   ASSERT_GE(sent.size(), 290U);
@@ -147,14 +149,14 @@ TEST_F(CbrTest, PayloadCarriesTheSequenceNumberLittleEndian) {
 }
 
 TEST_F(CbrTest, NothingIsSentBeforeStart) {
-  RobotWorld world(scenario(20, {{"fraction", 1.0}, {"start_s", 3.0}}), loader_);
+  RobotWorld world(settings_for(20, {{"fraction", 1.0}, {"start_s", 3.0}}), loader_);
   EXPECT_TRUE(run(world, 30).empty());  // steps at 0.0 .. 2.9 s
   EXPECT_FALSE(run(world, 5).empty());
 }
 
 TEST_F(CbrTest, FixedDestinationReceivesFromEverySenderAndDoesNotSend) {
   RobotWorld world(
-      scenario(10, {{"fraction", 1.0}, {"destination", std::int64_t{4}}, {"start_s", 0.0}}),
+      settings_for(10, {{"fraction", 1.0}, {"destination", std::int64_t{4}}, {"start_s", 0.0}}),
       loader_);
   const auto sent = run(world, 10);
   const auto senders = sources(sent);
@@ -164,16 +166,16 @@ TEST_F(CbrTest, FixedDestinationReceivesFromEverySenderAndDoesNotSend) {
 }
 
 TEST_F(CbrTest, DestinationThatIsNoRobotIsRefused) {
-  EXPECT_THROW(RobotWorld(scenario(10, {{"destination", std::int64_t{10}}}), loader_),
+  EXPECT_THROW(RobotWorld(settings_for(10, {{"destination", std::int64_t{10}}}), loader_),
                std::invalid_argument);
 }
 
 // Receivers record the delay and hop count of messages from CBR senders addressed to them.
 TEST_F(CbrTest, ReceiversRecordDelayOfTheirMessages) {
-  RobotWorld world(scenario(10, {{"fraction", 0.3},
-                                 {"start_s", 0.0},
-                                 {"rate_hz", 10.0},
-                                 {"payload_bytes", std::int64_t{64}}}),
+  RobotWorld world(settings_for(10, {{"fraction", 0.3},
+                                     {"start_s", 0.0},
+                                     {"rate_hz", 10.0},
+                                     {"payload_bytes", std::int64_t{64}}}),
                    loader_);
   std::vector<AppMessage> sent;
   world.step({}, sent);  // t = 0: the first sends are due within [0, 0.1) s

@@ -14,7 +14,7 @@ namespace swarmnet {
 namespace {
 
 using test::make_choice;
-using test::make_scenario;
+using test::make_settings;
 using test::Overrides;
 
 class DiffusionTest : public ::testing::Test {
@@ -24,12 +24,12 @@ class DiffusionTest : public ::testing::Test {
 
 // In an open arena a robot without random turns covers speed * time in a straight line.
 TEST_F(DiffusionTest, RobotInAnOpenArenaKeepsMovingAtSpeed) {
-  Scenario scenario = make_scenario(loader_, 1, 200.0, 200.0);
-  scenario.robots.placement = Rect{99, 99, 101, 101};
-  scenario.robots.controllers.push_back(
+  RobotSettings settings = make_settings(loader_, 1, 200.0, 200.0);
+  settings.robots.placement = Rect{99, 99, 101, 101};
+  settings.robots.controllers.push_back(
       make_choice(loader_, "diffusion", PluginKind::controller,
                   {{"turn_interval_s", 0.0}, {"speed_mps", 0.8}}));
-  RobotWorld world(scenario, loader_);
+  RobotWorld world(settings, loader_);
   const Vec2 start = world.bodies()[0].position;
   std::vector<AppMessage> sent;
   for (int i = 0; i < 500; ++i) world.step({}, sent);
@@ -39,11 +39,11 @@ TEST_F(DiffusionTest, RobotInAnOpenArenaKeepsMovingAtSpeed) {
 // With random turns a robot still moves at full speed between turns: every step either covers
 // speed * dt or turns in place, and most steps move.
 TEST_F(DiffusionTest, RandomWalkMovesAtSpeedBetweenTurns) {
-  Scenario scenario = make_scenario(loader_, 1, 400.0, 400.0);
-  scenario.robots.placement = Rect{199, 199, 201, 201};
-  scenario.robots.controllers.push_back(
+  RobotSettings settings = make_settings(loader_, 1, 400.0, 400.0);
+  settings.robots.placement = Rect{199, 199, 201, 201};
+  settings.robots.controllers.push_back(
       make_choice(loader_, "diffusion", PluginKind::controller, {{"turn_interval_s", 5.0}}));
-  RobotWorld world(scenario, loader_);
+  RobotWorld world(settings, loader_);
   std::vector<AppMessage> sent;
   int moving = 0;
   int turning = 0;
@@ -66,13 +66,13 @@ TEST_F(DiffusionTest, RandomWalkMovesAtSpeedBetweenTurns) {
 
 // A robot heading for a wall turns away before touching it, the shorter way round.
 TEST_F(DiffusionTest, AvoidsAWallAheadWithoutTouchingIt) {
-  Scenario scenario = make_scenario(loader_, 1, 20.0, 200.0, 3);
-  scenario.robots.placement = Rect{10, 99, 10.5, 101};
-  scenario.robots.controllers.push_back(
+  RobotSettings settings = make_settings(loader_, 1, 20.0, 200.0, 3);
+  settings.robots.placement = Rect{10, 99, 10.5, 101};
+  settings.robots.controllers.push_back(
       make_choice(loader_, "diffusion", PluginKind::controller, {{"turn_interval_s", 0.0}}));
-  RobotWorld world(scenario, loader_);
+  RobotWorld world(settings, loader_);
   std::vector<AppMessage> sent;
-  const double r = scenario.robots.radius_m;
+  const double r = settings.robots.radius_m;
   for (int i = 0; i < 3000; ++i) {
     world.step({}, sent);
     const Vec2& p = world.bodies()[0].position;
@@ -84,10 +84,10 @@ TEST_F(DiffusionTest, AvoidsAWallAheadWithoutTouchingIt) {
 // Robots in a small box keep moving: no robot spends long without making progress, and each
 // covers ground in every window.
 TEST_F(DiffusionTest, RobotsInABoxNeverGetStuck) {
-  Scenario scenario = make_scenario(loader_, 30, 8.0, 8.0, 5);
-  scenario.arena.obstacles.push_back(Rect{3.5, 3.5, 4.5, 4.5});
-  scenario.robots.controllers.push_back(make_choice(loader_, "diffusion", PluginKind::controller));
-  RobotWorld world(scenario, loader_);
+  RobotSettings settings = make_settings(loader_, 30, 8.0, 8.0, 5);
+  settings.arena.obstacles.push_back(Rect{3.5, 3.5, 4.5, 4.5});
+  settings.robots.controllers.push_back(make_choice(loader_, "diffusion", PluginKind::controller));
+  RobotWorld world(settings, loader_);
   std::vector<AppMessage> sent;
   const std::size_t n = world.robot_count();
   std::vector<double> window_path(n, 0.0);

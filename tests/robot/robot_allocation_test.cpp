@@ -31,7 +31,7 @@ namespace swarmnet {
 namespace {
 
 using test::make_choice;
-using test::make_scenario;
+using test::make_settings;
 
 std::size_t allocations_during(const auto& action) {
   allocations = 0;
@@ -54,11 +54,11 @@ TEST(RobotAllocationTest, CountingSeesPluginAllocations) {
 
 TEST(RobotAllocationTest, DenseDiffusingSwarmStepsWithoutAllocating) {
   PluginLoader loader;
-  Scenario scenario = make_scenario(loader, 400, 12.0, 12.0);
-  scenario.arena.obstacles.push_back(Rect{5.0, 5.0, 7.0, 6.0});
-  scenario.robots.controllers.push_back(
+  RobotSettings settings = make_settings(loader, 400, 12.0, 12.0);
+  settings.arena.obstacles.push_back(Rect{5.0, 5.0, 7.0, 6.0});
+  settings.robots.controllers.push_back(
       make_choice(loader, "diffusion", PluginKind::controller, {{"turn_interval_s", 1.0}}));
-  RobotWorld world(scenario, loader);
+  RobotWorld world(settings, loader);
   std::vector<AppMessage> sent;
   world.step({}, sent);
   EXPECT_EQ(allocations_during([&] {
@@ -71,8 +71,8 @@ TEST(RobotAllocationTest, DenseDiffusingSwarmStepsWithoutAllocating) {
 // grown, repeating the same traffic allocates nothing.
 TEST(RobotAllocationTest, InboxesReuseTheirSlots) {
   PluginLoader loader;
-  Scenario scenario = make_scenario(loader, 20, 10.0, 10.0);
-  RobotWorld world(scenario, loader);
+  RobotSettings settings = make_settings(loader, 20, 10.0, 10.0);
+  RobotWorld world(settings, loader);
   std::vector<Delivery> deliveries;
   for (RobotId r = 0; r < 20; ++r) {
     for (int k = 0; k < 3; ++k) {

@@ -1,4 +1,4 @@
-// Helpers for the robot-half tests: hand-built scenarios and plugin instances. (A fake
+// Helpers for the robot-half tests: hand-built settings and plugin instances. (A fake
 // RobotContext for driving a controller without a world is in the SDK test kit.)
 #pragma once
 
@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
+#include "plugin/default_plugin_choice.hpp"
 #include "plugin/plugin_loader.hpp"
-#include "scenario/default_plugin_choice.hpp"
-#include "scenario/scenario.hpp"
+#include "robot/robot_settings.hpp"
 #include "swarmnet/controller.hpp"
 #include "swarmnet/physics.hpp"
 
@@ -30,22 +30,20 @@ inline PluginChoice make_choice(PluginLoader& loader, const std::string& name, P
   return choice;
 }
 
-// A scenario with `count` robots over the whole `width_m` x `height_m` arena, kinematic2d physics
-// and no controllers.
-inline Scenario make_scenario(PluginLoader& loader, std::uint32_t count, double width_m,
-                              double height_m, std::uint64_t seed = 1) {
-  Scenario scenario;
-  scenario.name = "robot-test";
-  scenario.seed = seed;
-  scenario.step_s = 0.1;
-  scenario.duration_s = 10.0;
-  scenario.arena.width_m = width_m;
-  scenario.arena.height_m = height_m;
-  scenario.robots.count = count;
-  scenario.robots.placement = Rect{0.0, 0.0, width_m, height_m};
-  scenario.robots.proximity = ProximityConfig{24, 1.0};
-  scenario.physics = make_choice(loader, "kinematic2d", PluginKind::physics);
-  return scenario;
+// Robot settings with `count` robots over the whole `width_m` x `height_m` arena, kinematic2d
+// physics and no controllers.
+inline RobotSettings make_settings(PluginLoader& loader, std::uint32_t count, double width_m,
+                                   double height_m, std::uint64_t seed = 1) {
+  RobotSettings settings;
+  settings.seed = seed;
+  settings.step_s = 0.1;
+  settings.arena.width_m = width_m;
+  settings.arena.height_m = height_m;
+  settings.robots.count = count;
+  settings.robots.placement = Rect{0.0, 0.0, width_m, height_m};
+  settings.robots.proximity = ProximityConfig{24, 1.0};
+  settings.physics = make_choice(loader, "kinematic2d", PluginKind::physics);
+  return settings;
 }
 
 inline PluginInstance<Physics> make_physics(PluginLoader& loader, const Overrides& overrides = {}) {

@@ -17,19 +17,19 @@ namespace swarmnet {
 namespace {
 
 using test::make_choice;
-using test::make_scenario;
+using test::make_settings;
 
 class RobotWorldTest : public ::testing::Test {
  protected:
   // 200 robots diffusing around an obstacle while a quarter of them send CBR traffic.
-  Scenario busy_scenario(std::uint64_t seed) {
-    Scenario scenario = make_scenario(loader_, 200, 15.0, 15.0, seed);
-    scenario.arena.obstacles.push_back(Rect{6.0, 6.0, 9.0, 7.0});
-    scenario.robots.controllers.push_back(
+  RobotSettings busy_settings(std::uint64_t seed) {
+    RobotSettings settings = make_settings(loader_, 200, 15.0, 15.0, seed);
+    settings.arena.obstacles.push_back(Rect{6.0, 6.0, 9.0, 7.0});
+    settings.robots.controllers.push_back(
         make_choice(loader_, "diffusion", PluginKind::controller, {{"turn_interval_s", 3.0}}));
-    scenario.robots.controllers.push_back(make_choice(loader_, "cbr", PluginKind::controller,
+    settings.robots.controllers.push_back(make_choice(loader_, "cbr", PluginKind::controller,
                                                       {{"fraction", 0.25}, {"start_s", 0.5}}));
-    return scenario;
+    return settings;
   }
 
   PluginLoader loader_;
@@ -52,9 +52,9 @@ bool bitwise_equal(std::span<const RobotBody> a, std::span<const RobotBody> b) {
 }
 
 TEST_F(RobotWorldTest, SameScenarioGivesBitwiseIdenticalRuns) {
-  RobotWorld first(busy_scenario(21), loader_);
-  RobotWorld second(busy_scenario(21), loader_);
-  RobotWorld other(busy_scenario(22), loader_);
+  RobotWorld first(busy_settings(21), loader_);
+  RobotWorld second(busy_settings(21), loader_);
+  RobotWorld other(busy_settings(22), loader_);
   ASSERT_TRUE(bitwise_equal(first.bodies(), second.bodies()));
   std::vector<AppMessage> sent_first;
   std::vector<AppMessage> sent_second;
@@ -74,14 +74,14 @@ TEST_F(RobotWorldTest, SameScenarioGivesBitwiseIdenticalRuns) {
     EXPECT_EQ(sent_first[i].payload, sent_second[i].payload);
   }
   // The robots did move.
-  RobotWorld fresh(busy_scenario(21), loader_);
+  RobotWorld fresh(busy_settings(21), loader_);
   EXPECT_FALSE(bitwise_equal(first.bodies(), fresh.bodies()));
 }
 
 TEST_F(RobotWorldTest, TimeAdvancesByWholeSteps) {
-  Scenario scenario = make_scenario(loader_, 3, 10.0, 10.0);
-  scenario.step_s = 0.05;
-  RobotWorld world(scenario, loader_);
+  RobotSettings settings = make_settings(loader_, 3, 10.0, 10.0);
+  settings.step_s = 0.05;
+  RobotWorld world(settings, loader_);
   EXPECT_EQ(world.robot_count(), 3U);
   EXPECT_EQ(world.now(), kTimeZero);
   std::vector<AppMessage> sent;
@@ -92,7 +92,7 @@ TEST_F(RobotWorldTest, TimeAdvancesByWholeSteps) {
 }
 
 TEST_F(RobotWorldTest, MessageIdsAscendFromZeroAcrossSteps) {
-  RobotWorld world(busy_scenario(3), loader_);
+  RobotWorld world(busy_settings(3), loader_);
   std::vector<AppMessage> sent;
   std::vector<AppMessage> all;
   for (int i = 0; i < 50; ++i) {
@@ -107,27 +107,27 @@ TEST_F(RobotWorldTest, MessageIdsAscendFromZeroAcrossSteps) {
 }
 
 TEST_F(RobotWorldTest, ControllersSeeProximityAndPlacementIsValid) {
-  Scenario scenario = make_scenario(loader_, 40, 6.0, 6.0);
-  RobotWorld world(scenario, loader_);
+  RobotSettings settings = make_settings(loader_, 40, 6.0, 6.0);
+  RobotWorld world(settings, loader_);
   for (std::uint32_t r = 0; r < world.robot_count(); ++r) {
     ASSERT_EQ(world.proximity(r).size(), 24U);
     for (double reading : world.proximity(r)) {
       EXPECT_GE(reading, 0.0);
-      EXPECT_LE(reading, scenario.robots.proximity.range_m);
+      EXPECT_LE(reading, settings.robots.proximity.range_m);
     }
   }
   const auto bodies = world.bodies();
   for (const auto& body : bodies) {
-    EXPECT_EQ(body.radius_m, scenario.robots.radius_m);
-    EXPECT_EQ(body.axle_m, scenario.robots.axle_m);
-    EXPECT_EQ(body.max_speed_mps, scenario.robots.max_speed_mps);
+    EXPECT_EQ(body.radius_m, settings.robots.radius_m);
+    EXPECT_EQ(body.axle_m, settings.robots.axle_m);
+    EXPECT_EQ(body.max_speed_mps, settings.robots.max_speed_mps);
   }
 }
 
 TEST_F(RobotWorldTest, PlacementFailureNamesTheCounts) {
-  Scenario scenario = make_scenario(loader_, 500, 2.0, 2.0);
+  RobotSettings settings = make_settings(loader_, 500, 2.0, 2.0);
   try {
-    RobotWorld world(scenario, loader_);
+    RobotWorld world(settings, loader_);
     FAIL() << "500 robots fit in 4 m^2";
   } catch (const std::runtime_error& error) {
     EXPECT_NE(std::string(error.what()).find("of 500 robots"), std::string::npos);

@@ -22,13 +22,13 @@ using test::set_param;
 // threshold with this transmit power.
 const double kTxPower120mDbm = -82.0 + 46.6777 + 30.0 * std::log10(120.0);
 
-Scenario wireless_scenario(PluginLoader& loader, std::uint32_t robots,
-                           const std::string& routing = "direct") {
-  Scenario scenario = test::make_scenario(loader, robots, "dcf80211", routing);
-  scenario.network.propagation = {choose(loader, "log_distance", PluginKind::propagation)};
-  scenario.network.phy.model = PhyModel::sinr;
-  scenario.network.phy.tx_power_dbm = kTxPower120mDbm;
-  return scenario;
+NetworkSettings wireless_scenario(PluginLoader& loader, std::uint32_t robots,
+                                  const std::string& routing = "direct") {
+  NetworkSettings settings = test::make_settings(loader, robots, "dcf80211", routing);
+  settings.network.propagation = {choose(loader, "log_distance", PluginKind::propagation)};
+  settings.network.phy.model = PhyModel::sinr;
+  settings.network.phy.tx_power_dbm = kTxPower120mDbm;
+  return settings;
 }
 
 struct Outcome {
@@ -36,10 +36,10 @@ struct Outcome {
   nlohmann::ordered_json report;
 };
 
-Outcome simulate(const Scenario& scenario, PluginLoader& loader,
+Outcome simulate(const NetworkSettings& settings, PluginLoader& loader,
                  const std::vector<StepBatch>& batches) {
   Outcome outcome;
-  NetworkSimulator simulator(scenario, loader, nullptr);
+  NetworkSimulator simulator(settings, loader, nullptr);
   StepResult result;
   for (const StepBatch& batch : batches) {
     simulator.run_step(batch, result);
@@ -57,13 +57,13 @@ std::size_t delivered_to(const Outcome& outcome, RobotId receiver) {
 
 TEST(WirelessNetwork, NodesEitherSideOfTheSensitivityEdge) {
   PluginLoader loader;
-  const Scenario scenario = wireless_scenario(loader, 3);
+  const NetworkSettings settings = wireless_scenario(loader, 3);
   // Node 1 at 119 m (-81.9 dBm) hears node 0, node 2 at 121 m (-82.1 dBm) does not.
   const std::vector<Vec2> positions = {{10, 50}, {129, 50}, {10, 171}};
   std::vector<AppMessage> messages;
   for (std::uint64_t i = 0; i < 20; ++i) messages.push_back(test::message(i, 0, kBroadcast, 200));
   const Outcome outcome =
-      simulate(scenario, loader, test::fixed_batches(scenario, positions, 3, std::move(messages)));
+      simulate(settings, loader, test::fixed_batches(settings, positions, 3, std::move(messages)));
   EXPECT_EQ(delivered_to(outcome, 1), 20U);
   EXPECT_EQ(delivered_to(outcome, 2), 0U);
   EXPECT_EQ(outcome.report["mac"]["tx_frames"], 20);
@@ -71,11 +71,11 @@ TEST(WirelessNetwork, NodesEitherSideOfTheSensitivityEdge) {
 
 TEST(WirelessNetwork, UnicastIsAcknowledgedAndRetriedUntilTheLimit) {
   PluginLoader loader;
-  Scenario scenario = wireless_scenario(loader, 2);
+  NetworkSettings settings = wireless_scenario(loader, 2);
   // Out of range: every attempt times out; 7 attempts, then a retry_limit drop.
   const std::vector<Vec2> positions = {{10, 50}, {200, 50}};
-  Outcome outcome = simulate(scenario, loader,
-                             test::fixed_batches(scenario, positions, 3, {test::message(1, 0, 1)}));
+  Outcome outcome = simulate(settings, loader,
+                             test::fixed_batches(settings, positions, 3, {test::message(1, 0, 1)}));
   EXPECT_EQ(outcome.report["mac"]["tx_frames"], 7);
   EXPECT_EQ(outcome.report["mac"]["ack_timeouts"], 7);
   EXPECT_EQ(outcome.report["mac"]["retries"], 6);
@@ -83,7 +83,7 @@ TEST(WirelessNetwork, UnicastIsAcknowledgedAndRetriedUntilTheLimit) {
   // In range: one data frame, one ACK.
   const std::vector<Vec2> near = {{10, 50}, {60, 50}};
   outcome =
-      simulate(scenario, loader, test::fixed_batches(scenario, near, 3, {test::message(1, 0, 1)}));
+      simulate(settings, loader, test::fixed_batches(settings, near, 3, {test::message(1, 0, 1)}));
   EXPECT_EQ(outcome.report["packets"]["delivered"], 1);
   EXPECT_EQ(outcome.report["mac"]["tx_frames"], 2);
   EXPECT_EQ(outcome.report["mac"]["acks"], 1);
@@ -93,11 +93,11 @@ TEST(WirelessNetwork, PacketAtAnIdleStationWaitsDifsFromItsArrival) {
   // ns-3.37 (ChannelAccessManager::NeedBackoffUponAccess): backoff 0 and the medium idle when
   // the packet arrives: no backoff, but the medium must stay idle for DIFS from the arrival.
   PluginLoader loader;
-  const Scenario scenario = wireless_scenario(loader, 2);
+  const NetworkSettings settings = wireless_scenario(loader, 2);
   const std::vector<Vec2> near = {{10, 50}, {60, 50}};
-  std::vector<StepBatch> batches = test::fixed_batches(scenario, near, 6, {});
+  std::vector<StepBatch> batches = test::fixed_batches(settings, near, 6, {});
   batches[3].messages.push_back(test::message(7, 0, 1));  // long after the post-backoff ended
-  const Outcome outcome = simulate(scenario, loader, batches);
+  const Outcome outcome = simulate(settings, loader, batches);
   ASSERT_EQ(outcome.deliveries.size(), 1U);
   const Delivery& d = outcome.deliveries[0];
   const SimTime difs = from_seconds(34e-6);
@@ -110,16 +110,16 @@ TEST(WirelessNetwork, PacketAtAnIdleStationWaitsDifsFromItsArrival) {
 // A and C (200 m apart: -88.7 dBm, below carrier sense) both send to B in the middle.
 Outcome hidden_terminals(bool rts_cts) {
   PluginLoader loader;
-  Scenario scenario = wireless_scenario(loader, 3);
-  set_param(scenario.network.mac, "rts_threshold_bytes", std::int64_t{rts_cts ? 0 : 65535});
+  NetworkSettings settings = wireless_scenario(loader, 3);
+  set_param(settings.network.mac, "rts_threshold_bytes", std::int64_t{rts_cts ? 0 : 65535});
   const std::vector<Vec2> positions = {{10, 50}, {110, 50}, {210, 50}};
   std::vector<AppMessage> messages;
   for (std::uint64_t i = 0; i < 300; ++i) {
     messages.push_back(test::message(2 * i, 0, 1, 1000));
     messages.push_back(test::message(2 * i + 1, 2, 1, 1000));
   }
-  return simulate(scenario, loader,
-                  test::fixed_batches(scenario, positions, 20, std::move(messages)));
+  return simulate(settings, loader,
+                  test::fixed_batches(settings, positions, 20, std::move(messages)));
 }
 
 TEST(WirelessNetwork, HiddenTerminalsCollideWithoutRtsCtsAndMuchLessWithIt) {
@@ -167,11 +167,11 @@ double bianchi_frames_per_s(int n, double slot_s, double ts_s, double tc_s) {
 
 double simulated_frames_per_s(int n, double run_s, std::uint64_t seed) {
   PluginLoader loader;
-  Scenario scenario = wireless_scenario(loader, static_cast<std::uint32_t>(n + 1));
-  scenario.seed = seed;
-  scenario.network.phy.tx_power_dbm = 16.0206;
-  set_param(scenario.network.mac, "queue_limit", std::int64_t{1000000});
-  set_param(scenario.network.mac, "queue_max_delay_s", 1.0e6);
+  NetworkSettings settings = wireless_scenario(loader, static_cast<std::uint32_t>(n + 1));
+  settings.seed = seed;
+  settings.network.phy.tx_power_dbm = 16.0206;
+  set_param(settings.network.mac, "queue_limit", std::int64_t{1000000});
+  set_param(settings.network.mac, "queue_max_delay_s", 1.0e6);
   // Station i on a circle of 0.4 m around the sink (node n): every pair is within the 1 m
   // reference distance, so all powers are equal and every collision destroys all frames.
   std::vector<Vec2> positions;
@@ -180,7 +180,7 @@ double simulated_frames_per_s(int n, double run_s, std::uint64_t seed) {
     positions.emplace_back(500.0 + 0.4 * std::cos(a), 500.0 + 0.4 * std::sin(a));
   }
   positions.emplace_back(500.0, 500.0);
-  const auto steps = static_cast<std::uint64_t>(std::llround(run_s / scenario.step_s));
+  const auto steps = static_cast<std::uint64_t>(std::llround(run_s / settings.step_s));
   // Saturated: more packets than the cell can carry, all queued at the start.
   const int per_station = static_cast<int>(run_s * 800.0 / n) + 50;
   std::vector<AppMessage> messages;
@@ -192,7 +192,7 @@ double simulated_frames_per_s(int n, double run_s, std::uint64_t seed) {
     }
   }
   const Outcome outcome = simulate(
-      scenario, loader, test::fixed_batches(scenario, positions, steps, std::move(messages)));
+      settings, loader, test::fixed_batches(settings, positions, steps, std::move(messages)));
   // Count deliveries after a warm-up of 0.5 s (all queues filled during the first step).
   const SimTime warm_up = from_seconds(0.5);
   std::size_t frames = 0;
@@ -228,17 +228,17 @@ TEST(WirelessNetwork, CutoffGivesIdenticalResultsWhereItIsExact) {
   // log_distance (deterministic) + sinr: nodes beyond the cutoff receive less than the
   // interference floor, which the PHY ignores anyway, so visiting them changes nothing.
   PluginLoader loader;
-  Scenario scenario = wireless_scenario(loader, 80, "flooding");
-  scenario.arena.width_m = 1500.0;
-  scenario.arena.height_m = 1500.0;
-  set_param(scenario.network.routing, "ttl", std::int64_t{3});
-  const auto batches = test::random_batches(scenario, 11, 20, 6, 0.3, 2.0);
-  scenario.network.channel.cutoff = true;
-  const test::RunOutput with_cutoff = test::run(scenario, loader, batches);
-  scenario.network.channel.cutoff = false;
-  const test::RunOutput without = test::run(scenario, loader, batches);
+  NetworkSettings settings = wireless_scenario(loader, 80, "flooding");
+  settings.arena.width_m = 1500.0;
+  settings.arena.height_m = 1500.0;
+  set_param(settings.network.routing, "ttl", std::int64_t{3});
+  const auto batches = test::random_batches(settings, 11, 20, 6, 0.3, 2.0);
+  settings.network.channel.cutoff = true;
+  const test::RunOutput with_cutoff = test::run(settings, loader, batches);
+  settings.network.channel.cutoff = false;
+  const test::RunOutput without = test::run(settings, loader, batches);
   {
-    const NetworkSimulator probe(scenario, loader, nullptr);
+    const NetworkSimulator probe(settings, loader, nullptr);
     EXPECT_NEAR(probe.channel().cutoff_m(), 648.0, 2.0);
   }
   EXPECT_EQ(with_cutoff.trace, without.trace);

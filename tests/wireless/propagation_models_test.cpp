@@ -150,12 +150,12 @@ TEST(WirelessPropagation, ShadowingIsGaussianInDbAndBounded) {
 
 TEST(WirelessPropagation, ChainAppliesModelsInOrderAndBoundsTheCutoff) {
   PluginLoader loader;
-  Scenario scenario = test::make_scenario(loader, 2);
-  scenario.network.propagation = {choose(loader, "log_distance", PluginKind::propagation),
+  NetworkSettings settings = test::make_settings(loader, 2);
+  settings.network.propagation = {choose(loader, "log_distance", PluginKind::propagation),
                                   choose(loader, "nakagami", PluginKind::propagation)};
-  const PropagationChain chain(scenario, loader);
+  const PropagationChain chain(settings, loader);
   // The cutoff of log_distance + nakagami is farther than that of log_distance alone.
-  Scenario plain = scenario;
+  NetworkSettings plain = settings;
   plain.network.propagation.pop_back();
   const PropagationChain plain_chain(plain, loader);
   const double threshold = -82.0;
@@ -201,11 +201,11 @@ TEST(WirelessPropagation, ModelsSayWhetherTheyVaryPerFrame) {
   EXPECT_TRUE(make_model(loader, lossy)->varies_per_frame());
   EXPECT_TRUE(draws_per_frame(make_model(loader, lossy)));
 
-  Scenario scenario = test::make_scenario(loader, 2);
-  scenario.network.propagation = {choose(loader, "log_distance", PluginKind::propagation)};
-  EXPECT_FALSE(PropagationChain(scenario, loader).varies_per_frame());
-  scenario.network.propagation.push_back(choose(loader, "nakagami", PluginKind::propagation));
-  EXPECT_TRUE(PropagationChain(scenario, loader).varies_per_frame());
+  NetworkSettings settings = test::make_settings(loader, 2);
+  settings.network.propagation = {choose(loader, "log_distance", PluginKind::propagation)};
+  EXPECT_FALSE(PropagationChain(settings, loader).varies_per_frame());
+  settings.network.propagation.push_back(choose(loader, "nakagami", PluginKind::propagation));
+  EXPECT_TRUE(PropagationChain(settings, loader).varies_per_frame());
 }
 
 }  // namespace

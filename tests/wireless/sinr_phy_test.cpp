@@ -286,21 +286,21 @@ TEST(WirelessChannel, QuietSignalsAreTheAudibleOnesBelowTheSensingThreshold) {
   // gets the frame as events; a node at 400 m (-97.7 dBm) only as a quiet signal; a node at
   // 700 m not at all.
   PluginLoader loader;
-  Scenario scenario = test::make_scenario(loader, 4, "dcf80211", "direct");
-  scenario.network.propagation = {test::choose(loader, "log_distance", PluginKind::propagation)};
-  scenario.network.phy.model = PhyModel::sinr;
-  scenario.network.phy.tx_power_dbm = -82.0 + 46.6777 + 30.0 * std::log10(120.0);
-  scenario.network.phy.sensing_floor_db = -10.0;
+  NetworkSettings settings = test::make_settings(loader, 4, "dcf80211", "direct");
+  settings.network.propagation = {test::choose(loader, "log_distance", PluginKind::propagation)};
+  settings.network.phy.model = PhyModel::sinr;
+  settings.network.phy.tx_power_dbm = -82.0 + 46.6777 + 30.0 * std::log10(120.0);
+  settings.network.phy.sensing_floor_db = -10.0;
   Scheduler scheduler;
-  const PropagationChain chain(scenario, loader);
-  const double tx_power = scenario.network.phy.tx_power_dbm;
-  Channel channel(scenario, PropagationChain(scenario, loader), scheduler, 4);
+  const PropagationChain chain(settings, loader);
+  const double tx_power = settings.network.phy.tx_power_dbm;
+  Channel channel(settings, PropagationChain(settings, loader), scheduler, 4);
   EXPECT_NEAR(channel.event_cutoff_m(), 120.0 * std::pow(10.0, 10.0 / 30.0), 0.01);
   EXPECT_NEAR(channel.cutoff_m(), 648.0, 1.0);
   std::vector<RecordingListener> listeners(4);
   std::vector<std::unique_ptr<Phy>> phys;
   for (NodeId node = 0; node < 4; ++node) {
-    phys.push_back(std::make_unique<Phy>(scenario.network.phy, listeners[node], &scheduler, node));
+    phys.push_back(std::make_unique<Phy>(settings.network.phy, listeners[node], &scheduler, node));
     channel.attach(node, *phys.back());
   }
   const std::vector<Vec2> positions{Vec2(0, 0), Vec2(50, 0), Vec2(400, 0), Vec2(700, 0)};
@@ -330,8 +330,8 @@ TEST(WirelessChannel, QuietSignalsAreTheAudibleOnesBelowTheSensingThreshold) {
   EXPECT_TRUE(listeners[3].log.empty());
 
   // The default sensing floor is below the interference floor: every audible signal is an event.
-  scenario.network.phy.sensing_floor_db = PhyConfig{}.sensing_floor_db;
-  Channel exact(scenario, PropagationChain(scenario, loader), scheduler, 4);
+  settings.network.phy.sensing_floor_db = PhyConfig{}.sensing_floor_db;
+  Channel exact(settings, PropagationChain(settings, loader), scheduler, 4);
   EXPECT_EQ(exact.event_cutoff_m(), exact.cutoff_m());
 }
 
@@ -408,21 +408,21 @@ TEST(WirelessChannel, LinksAreReusedWithinAStepOnlyWhenNoModelVariesPerFrame) {
   // it every frame draws its own power.
   const auto powers = [](bool fading) {
     PluginLoader loader;
-    Scenario scenario = test::make_scenario(loader, 2, "dcf80211", "direct");
-    scenario.network.propagation = {test::choose(loader, "log_distance", PluginKind::propagation)};
+    NetworkSettings settings = test::make_settings(loader, 2, "dcf80211", "direct");
+    settings.network.propagation = {test::choose(loader, "log_distance", PluginKind::propagation)};
     if (fading) {
-      scenario.network.propagation.push_back(
+      settings.network.propagation.push_back(
           test::choose(loader, "nakagami", PluginKind::propagation));
     }
-    scenario.network.phy.model = PhyModel::sinr;
-    scenario.network.phy.tx_power_dbm = 40.0;  // -60 dBm at 60 m: received through any fade here
+    settings.network.phy.model = PhyModel::sinr;
+    settings.network.phy.tx_power_dbm = 40.0;  // -60 dBm at 60 m: received through any fade here
     Scheduler scheduler;
-    Channel channel(scenario, PropagationChain(scenario, loader), scheduler, 2);
+    Channel channel(settings, PropagationChain(settings, loader), scheduler, 2);
     std::vector<RecordingListener> listeners(2);
     std::vector<std::unique_ptr<Phy>> phys;
     for (NodeId node = 0; node < 2; ++node) {
       phys.push_back(
-          std::make_unique<Phy>(scenario.network.phy, listeners[node], &scheduler, node));
+          std::make_unique<Phy>(settings.network.phy, listeners[node], &scheduler, node));
       channel.attach(node, *phys.back());
     }
     std::vector<double> received;
@@ -451,15 +451,15 @@ TEST(WirelessChannel, LinksAreReusedWithinAStepOnlyWhenNoModelVariesPerFrame) {
 TEST(WirelessChannel, APhyIsAttachedBeforeTheFirstFrameOnly) {
   // The links a step keeps hold the receivers' PHYs: replacing one afterwards is refused.
   PluginLoader loader;
-  Scenario scenario = test::make_scenario(loader, 2, "dcf80211", "direct");
-  scenario.network.propagation = {test::choose(loader, "log_distance", PluginKind::propagation)};
-  scenario.network.phy.model = PhyModel::sinr;
+  NetworkSettings settings = test::make_settings(loader, 2, "dcf80211", "direct");
+  settings.network.propagation = {test::choose(loader, "log_distance", PluginKind::propagation)};
+  settings.network.phy.model = PhyModel::sinr;
   Scheduler scheduler;
-  Channel channel(scenario, PropagationChain(scenario, loader), scheduler, 2);
+  Channel channel(settings, PropagationChain(settings, loader), scheduler, 2);
   std::vector<RecordingListener> listeners(3);
-  Phy first(scenario.network.phy, listeners[0], &scheduler, 0);
-  Phy second(scenario.network.phy, listeners[1], &scheduler, 1);
-  Phy replacement(scenario.network.phy, listeners[2], &scheduler, 1);
+  Phy first(settings.network.phy, listeners[0], &scheduler, 0);
+  Phy second(settings.network.phy, listeners[1], &scheduler, 1);
+  Phy replacement(settings.network.phy, listeners[2], &scheduler, 1);
   channel.attach(0, first);
   channel.attach(1, second);
   channel.attach(1, replacement);  // still before any frame: allowed

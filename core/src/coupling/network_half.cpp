@@ -14,13 +14,14 @@ namespace swarmnet {
 
 namespace {
 
-void serve(const Scenario& scenario, StepChannel& channel, const std::filesystem::path& run_dir) {
+void serve(const Scenario& scenario, PluginLoader& loader, StepChannel& channel,
+           const std::filesystem::path& run_dir) {
   const double cpu_start = thread_cpu_seconds();
   double transport_cpu = 0.0;
   std::optional<AtomicFile> trace;
   if (scenario.output.packet_trace) trace.emplace(run_dir / kPacketTraceFile);
-  PluginLoader loader(scenario.plugin_paths);
-  NetworkSimulator simulator(scenario, loader, trace ? &trace->stream() : nullptr);
+  NetworkSimulator simulator(scenario.network_settings(), loader,
+                             trace ? &trace->stream() : nullptr);
 
   StepBatch batch;
   StepResult result;
@@ -50,10 +51,14 @@ void serve(const Scenario& scenario, StepChannel& channel, const std::filesystem
 
 }  // namespace
 
-void serve_network_half(const Scenario& scenario, StepChannel& channel,
+Welcome welcome_for(const Scenario& scenario) {
+  return Welcome{scenario.seed, scenario.robots.count, from_seconds(scenario.step_s).count()};
+}
+
+void serve_network_half(const Scenario& scenario, PluginLoader& loader, StepChannel& channel,
                         const std::filesystem::path& run_dir) {
   try {
-    serve(scenario, channel, run_dir);
+    serve(scenario, loader, channel, run_dir);
   } catch (const std::exception& error) {
     channel.send_failure(error.what());
     channel.transport().close();
@@ -70,23 +75,14 @@ void serve_network_connection(StepChannel& channel,
     const ProtocolResult received = channel.receive_hello(hello);
     if (!received.ok()) throw RunError(received.error);
     accepted.emplace(setup(hello));
-    if (accepted->scenario.robots.count != hello.robots) {
-      throw RunError("the hello announces " + std::to_string(hello.robots) +
-                     " robots but its scenario has " +
-                     std::to_string(accepted->scenario.robots.count));
-    }
-    Hello answer = hello;
-    answer.seed = accepted->scenario.seed;
-    answer.robots = accepted->scenario.robots.count;
-    answer.step_ns = from_seconds(accepted->scenario.step_s).count();
-    const ProtocolResult sent = channel.send_welcome(answer);
+    const ProtocolResult sent = channel.send_welcome(welcome_for(accepted->scenario));
     if (!sent.ok()) throw RunError(sent.error);
   } catch (const std::exception& error) {
     channel.send_failure(error.what());
     channel.transport().close();
     throw RunError(std::string("network half: ") + error.what());
   }
-  serve_network_half(accepted->scenario, channel, accepted->run_dir);
+  serve_network_half(accepted->scenario, *accepted->loader, channel, accepted->run_dir);
 }
 
 }  // namespace swarmnet

@@ -5,23 +5,31 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 
+#include "plugin/plugin_loader.hpp"
 #include "protocol/step_channel.hpp"
 #include "scenario/scenario.hpp"
 
 namespace swarmnet {
 
 // Runs until the robot half sends finish, then commits the packet trace (when the scenario asks
-// for one) into `run_dir` and sends the report. On any error it tells the robot half why
-// (a failure record), closes the channel and throws RunError.
-void serve_network_half(const Scenario& scenario, StepChannel& channel,
+// for one) into `run_dir` and sends the report. Plugins come from `loader`, the one that resolved
+// them when the scenario was validated. On any error it tells the robot half why (a failure
+// record), closes the channel and throws RunError.
+void serve_network_half(const Scenario& scenario, PluginLoader& loader, StepChannel& channel,
                         const std::filesystem::path& run_dir);
 
-// What the network half simulates and where it writes, decided from the robot half's hello.
+// What the network half simulates and where it writes, decided from the robot half's hello: the
+// scenario it validated, with the loader that resolved its plugins (used again to create them).
 struct NetworkSetup {
   Scenario scenario;
   std::filesystem::path run_dir;
+  std::shared_ptr<PluginLoader> loader;
 };
+
+// What a network half simulating `scenario` says in its welcome.
+Welcome welcome_for(const Scenario& scenario);
 
 // Answers the handshake (welcome, or failure with the reason), then serve_network_half().
 void serve_network_connection(StepChannel& channel,

@@ -60,14 +60,18 @@ std::string mib(std::uint64_t bytes) { return std::to_string(bytes >> 20U) + " M
 // Both halves as threads of this process over heap rings.
 class InprocLink final : public NetworkLink {
  public:
-  InprocLink(const Scenario& scenario, const std::filesystem::path& run_dir,
+  // The robot half has created everything it needs from `loader` before the link opens, so the
+  // network thread, started after that, is the loader's only user from then on.
+  InprocLink(const Scenario& scenario, PluginLoader& loader, const std::filesystem::path& run_dir,
              const LinkOptions& options)
       : channel_(options.ring_bytes, policy_with(options, {})),
         network_channel_(channel_.network_end(), "the robot half") {
-    thread_ = std::thread([this, &scenario, run_dir] {
+    thread_ = std::thread([this, &scenario, &loader, run_dir] {
       try {
         serve_network_connection(network_channel_, [&](const Hello&) {
-          return NetworkSetup{scenario, run_dir};
+          // The robot half's own validated scenario and loader: nothing is resolved twice.
+          return NetworkSetup{scenario, run_dir,
+                              std::shared_ptr<PluginLoader>(std::shared_ptr<void>(), &loader)};
         });
       } catch (const std::exception& error) {
         error_ = error.what();
@@ -204,7 +208,7 @@ std::pair<std::string, std::uint16_t> parse_host_port(const std::string& text) {
   return split_host_port(text);
 }
 
-std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario,
+std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario, PluginLoader& loader,
                                                const std::filesystem::path& run_dir,
                                                const LinkOptions& options) {
   if (!options.remote.empty()) {
@@ -228,7 +232,7 @@ std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario,
   }
   switch (options.kind) {
     case TransportKind::inproc:
-      return std::make_unique<InprocLink>(scenario, run_dir, options);
+      return std::make_unique<InprocLink>(scenario, loader, run_dir, options);
     case TransportKind::shm: {
       auto segment = ShmSegment::create(options.ring_bytes);
       auto child =

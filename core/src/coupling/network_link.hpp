@@ -14,6 +14,7 @@
 #include <string>
 #include <string_view>
 
+#include "plugin/plugin_loader.hpp"
 #include "scenario/scenario.hpp"
 #include "transport.hpp"
 
@@ -54,8 +55,9 @@ class NetworkLink {
 std::pair<std::string, std::uint16_t> parse_host_port(const std::string& text);
 
 // Starts the network half for `scenario` (thread or child process) or connects to a remote one.
-// Throws TransportError or RunError.
-std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario,
+// A thread creates its plugins with `loader` (the robot half's, done with it by then); a process
+// validates the scenario it is sent and resolves its own. Throws TransportError or RunError.
+std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario, PluginLoader& loader,
                                                const std::filesystem::path& run_dir,
                                                const LinkOptions& options);
 

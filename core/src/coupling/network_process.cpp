@@ -94,10 +94,11 @@ int serve_parent(const NetworkProcessOptions& options) {
   try {
     // The parent's own scenario, plugin paths and run directory: it started this process.
     serve_network_connection(channel, [&](const Hello& hello) {
-      PluginLoader loader;
-      return NetworkSetup{
-          load_scenario_text(hello.scenario_yaml, "the robot half's scenario", loader),
-          std::filesystem::path(hello.run_dir)};
+      auto loader = std::make_shared<PluginLoader>();
+      Scenario scenario =
+          load_scenario_text(hello.scenario_yaml, "the robot half's scenario", *loader);
+      return NetworkSetup{std::move(scenario), std::filesystem::path(hello.run_dir),
+                          std::move(loader)};
     });
   } catch (const std::exception& error) {
     // Already sent to the robot half, which reports it; printed too for anyone watching.
@@ -155,16 +156,16 @@ std::string redact(std::string message, const std::vector<std::filesystem::path>
 // server names. Errors reach the peer with this host's paths redacted.
 NetworkSetup remote_setup(const Hello& hello, const NetworkProcessOptions& options,
                           const std::filesystem::path& out) {
-  PluginLoader loader(options.plugin_paths);
-  std::vector<std::filesystem::path> private_dirs = loader.search_path();
+  auto loader = std::make_shared<PluginLoader>(options.plugin_paths);
+  std::vector<std::filesystem::path> private_dirs = loader->search_path();
   private_dirs.push_back(out);
   try {
     YAML::Node tree = YAML::Load(hello.scenario_yaml);
     if (tree.IsMap() && tree["plugin_paths"]) tree.remove("plugin_paths");
     YAML::Emitter emitter;
     emitter << tree;
-    NetworkSetup setup{load_scenario_text(emitter.c_str(), "the robot half's scenario", loader),
-                       next_run_dir(out)};
+    NetworkSetup setup{load_scenario_text(emitter.c_str(), "the robot half's scenario", *loader),
+                       next_run_dir(out), loader};
     setup.scenario.plugin_paths = options.plugin_paths;
     return setup;
   } catch (const std::exception& error) {

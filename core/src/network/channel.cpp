@@ -19,24 +19,24 @@ constexpr double kMinCellM = 1.0;
 
 }  // namespace
 
-Channel::Channel(const Scenario& scenario, PropagationChain chain, Scheduler& scheduler,
+Channel::Channel(const NetworkSettings& settings, PropagationChain chain, Scheduler& scheduler,
                  std::size_t node_count)
     : chain_(std::move(chain)),
       scheduler_(scheduler),
-      tx_power_dbm_(scenario.network.phy.tx_power_dbm + scenario.network.phy.tx_gain_db),
-      rx_gain_db_(scenario.network.phy.rx_gain_db),
-      audibility_dbm_(audibility_threshold_dbm(scenario.network.phy)),
-      event_dbm_(event_threshold_dbm(scenario.network.phy)),
+      tx_power_dbm_(settings.network.phy.tx_power_dbm + settings.network.phy.tx_gain_db),
+      rx_gain_db_(settings.network.phy.rx_gain_db),
+      audibility_dbm_(audibility_threshold_dbm(settings.network.phy)),
+      event_dbm_(event_threshold_dbm(settings.network.phy)),
       cutoff_m_(cutoff_distance_m(chain_, tx_power_dbm_, audibility_dbm_ - rx_gain_db_)),
       event_cutoff_m_(event_dbm_ > audibility_dbm_
                           ? cutoff_distance_m(chain_, tx_power_dbm_, event_dbm_ - rx_gain_db_)
                           : cutoff_m_),
-      use_grid_(scenario.network.channel.cutoff && std::isfinite(event_cutoff_m_)),
+      use_grid_(settings.network.channel.cutoff && std::isfinite(event_cutoff_m_)),
       has_quiet_signals_(event_dbm_ > audibility_dbm_),
       cache_links_(!chain_.varies_per_frame()),
       phys_(node_count, nullptr),
       positions_(node_count, Vec2::Zero()),
-      arena_bounds_{0.0, 0.0, scenario.arena.width_m, scenario.arena.height_m},
+      arena_bounds_{0.0, 0.0, settings.arena.width_m, settings.arena.height_m},
       step_links_(node_count) {
   rebuild_grid();
 }

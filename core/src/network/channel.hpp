@@ -25,7 +25,7 @@
 // (Propagation::varies_per_frame) a transmitter's receivers, delays and powers are computed at its
 // first frame of the step and shared by its later ones (a busy node sends several per step).
 //
-// Candidates: with the cutoff on (scenario.network.channel.cutoff) and a finite cutoff distance,
+// Candidates: with the cutoff on (settings.network.channel.cutoff) and a finite cutoff distance,
 // the nodes of a uniform grid neighbourhood closer than the cutoff; otherwise every node. Both
 // give the same frames at the same receivers at the same times, because a node at or beyond the
 // cutoff cannot hear the frame whatever the random draws (see cutoff_distance_m), and random
@@ -39,10 +39,10 @@
 #include <span>
 #include <vector>
 
+#include "network/network_settings.hpp"
 #include "network/phy.hpp"
 #include "network/propagation_chain.hpp"
 #include "network/scheduler.hpp"
-#include "scenario/scenario.hpp"
 #include "swarmnet/packet.hpp"
 #include "swarmnet/spatial_grid.hpp"
 #include "swarmnet/vector.hpp"
@@ -51,7 +51,7 @@ namespace swarmnet {
 
 class Channel final : public QuietSignalSource {
  public:
-  Channel(const Scenario& scenario, PropagationChain chain, Scheduler& scheduler,
+  Channel(const NetworkSettings& settings, PropagationChain chain, Scheduler& scheduler,
           std::size_t node_count);
 
   Channel(const Channel&) = delete;

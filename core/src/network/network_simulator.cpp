@@ -10,53 +10,54 @@ namespace swarmnet {
 
 namespace {
 
-PluginArgs node_plugin_args(const Scenario& scenario, const PluginChoice& choice, NodeId node) {
+PluginArgs node_plugin_args(const NetworkSettings& settings, const PluginChoice& choice,
+                            NodeId node) {
   PluginArgs args;
   args.params = choice.params;
   const std::uint64_t kind = hash_name(to_string(choice.kind));
   const std::uint64_t name = hash_name(choice.name.c_str());
-  args.seed = derive_seed(scenario.seed, {kind, name, node});
-  args.shared_seed = derive_seed(scenario.seed, {kind, name});
+  args.seed = derive_seed(settings.seed, {kind, name, node});
+  args.shared_seed = derive_seed(settings.seed, {kind, name});
   args.instance = node;
-  args.instance_count = scenario.robots.count;
+  args.instance_count = settings.nodes;
   return args;
 }
 
-SimTime checked_step(const Scenario& scenario) {
-  const SimTime step = from_seconds(scenario.step_s);
+SimTime checked_step(const NetworkSettings& settings) {
+  const SimTime step = from_seconds(settings.step_s);
   if (step <= kTimeZero) {
     throw std::invalid_argument("network: step_s must be at least 1 ns (got " +
-                                std::to_string(scenario.step_s) + ")");
+                                std::to_string(settings.step_s) + ")");
   }
   return step;
 }
 
 }  // namespace
 
-NetworkSimulator::NetworkSimulator(const Scenario& scenario, PluginLoader& loader,
+NetworkSimulator::NetworkSimulator(const NetworkSettings& settings, PluginLoader& loader,
                                    std::ostream* packet_trace)
-    : seed_(scenario.seed),
-      step_(checked_step(scenario)),
+    : seed_(settings.seed),
+      step_(checked_step(settings)),
       trace_(packet_trace),
-      channel_(scenario, PropagationChain(scenario, loader), scheduler_, scenario.robots.count),
-      application_(scenario.robots.count, metrics_, trace_, packet_uids_) {
+      channel_(settings, PropagationChain(settings, loader), scheduler_, settings.nodes),
+      application_(settings.nodes, metrics_, trace_, packet_uids_) {
   const NodeServices services{scheduler_,
                               channel_,
                               application_,
                               trace_,
                               metrics_,
                               packet_uids_,
-                              derive_seed(scenario.seed, {hash_name("phy")})};
-  PluginChoice mac = scenario.network.mac;
-  PluginChoice routing = scenario.network.routing;
+                              derive_seed(settings.seed, {hash_name("phy")})};
+  PluginChoice mac = settings.network.mac;
+  PluginChoice routing = settings.network.routing;
   mac.kind = PluginKind::mac;  // the seed keys name the kind, whatever the struct was filled with
   routing.kind = PluginKind::routing;
-  nodes_.reserve(scenario.robots.count);
-  for (NodeId id = 0; id < scenario.robots.count; ++id) {
-    auto mac_instance = loader.create<Mac>(mac.name, node_plugin_args(scenario, mac, id));
+  nodes_.reserve(settings.nodes);
+  for (NodeId id = 0; id < settings.nodes; ++id) {
+    auto mac_instance = loader.create<Mac>(mac.name, node_plugin_args(settings, mac, id));
     auto routing_instance =
-        loader.create<Routing>(routing.name, node_plugin_args(scenario, routing, id));
-    nodes_.push_back(std::make_unique<Node>(id, services, scenario.network.phy,
+        loader.create<Routing>(routing.name, node_plugin_args(settings, routing, id));
+    nodes_.push_back(std::make_unique<Node>(id, services, settings.network.phy,
                                             std::move(mac_instance), std::move(routing_instance)));
     channel_.attach(id, nodes_.back()->phy());
   }

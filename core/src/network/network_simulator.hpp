@@ -1,10 +1,11 @@
 // The network half (DESIGN.md section 1): one node per robot, discrete events in integer
 // nanoseconds, run one step window at a time by the step protocol (section 2).
 //
-//   scenario ──► NetworkSimulator ── nodes: app ↔ routing ↔ mac ↔ phy ↔ channel ↔ propagation
+//   NetworkSettings ──► NetworkSimulator ── nodes: app ↔ routing ↔ mac ↔ phy ↔ channel ↔
+//   propagation
 //
-// A run is a pure function of the scenario and the batches: every random draw comes from a
-// stream derived with derive_seed from scenario.seed and stable keys, events at one instant run in
+// A run is a pure function of its settings and the batches: every random draw comes from a
+// stream derived with derive_seed from settings.seed and stable keys, events at one instant run in
 // scheduling order, and nothing that reaches the output or the event order iterates an unordered
 // container.
 #pragma once
@@ -17,13 +18,13 @@
 #include "network/application_layer.hpp"
 #include "network/channel.hpp"
 #include "network/network_metrics.hpp"
+#include "network/network_settings.hpp"
 #include "network/node.hpp"
 #include "network/packet_trace.hpp"
 #include "network/packet_uid_source.hpp"
 #include "network/scheduler.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "protocol/step_data.hpp"
-#include "scenario/scenario.hpp"
 
 namespace swarmnet {
 
@@ -32,9 +33,10 @@ class NetworkSimulator {
   // `packet_trace` may be null (no trace); it must outlive finish(). Creates one node per robot,
   // one MAC and one routing instance per node, and the propagation chain, then calls attach() on
   // every node's MAC and routing (node order). Per-node plugin seeds:
-  // derive_seed(scenario.seed, {hash_name(kind), hash_name(plugin name), node}).
+  // derive_seed(settings.seed, {hash_name(kind), hash_name(plugin name), node}).
   // Throws PluginError or std::invalid_argument on a bad set-up.
-  NetworkSimulator(const Scenario& scenario, PluginLoader& loader, std::ostream* packet_trace);
+  NetworkSimulator(const NetworkSettings& settings, PluginLoader& loader,
+                   std::ostream* packet_trace);
   NetworkSimulator(const NetworkSimulator&) = delete;
   NetworkSimulator& operator=(const NetworkSimulator&) = delete;
   NetworkSimulator(NetworkSimulator&&) = delete;

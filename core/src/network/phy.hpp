@@ -59,8 +59,8 @@
 #include <utility>
 #include <vector>
 
+#include "network/network_settings.hpp"
 #include "network/scheduler.hpp"
-#include "scenario/scenario.hpp"
 #include "swarmnet/ids.hpp"
 #include "swarmnet/mac.hpp"
 #include "swarmnet/packet.hpp"

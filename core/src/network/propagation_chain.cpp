@@ -8,13 +8,13 @@
 
 namespace swarmnet {
 
-PropagationChain::PropagationChain(const Scenario& scenario, PluginLoader& loader) {
-  models_.reserve(scenario.network.propagation.size());
+PropagationChain::PropagationChain(const NetworkSettings& settings, PluginLoader& loader) {
+  models_.reserve(settings.network.propagation.size());
   std::uint64_t index = 0;
-  for (const PluginChoice& choice : scenario.network.propagation) {
+  for (const PluginChoice& choice : settings.network.propagation) {
     PluginArgs args;
     args.params = choice.params;
-    args.seed = derive_seed(scenario.seed, {hash_name("propagation"), index});
+    args.seed = derive_seed(settings.seed, {hash_name("propagation"), index});
     args.shared_seed = args.seed;
     args.instance = 0;
     args.instance_count = 1;

@@ -5,9 +5,9 @@
 #include <cstddef>
 #include <vector>
 
+#include "network/network_settings.hpp"
 #include "plugin/plugin_instance.hpp"
 #include "plugin/plugin_loader.hpp"
-#include "scenario/scenario.hpp"
 #include "swarmnet/propagation.hpp"
 
 namespace swarmnet {
@@ -15,8 +15,8 @@ namespace swarmnet {
 class PropagationChain {
  public:
   // One instance per chain entry (shared by every link), seeded with
-  // derive_seed(scenario.seed, {hash_name("propagation"), index}).
-  PropagationChain(const Scenario& scenario, PluginLoader& loader);
+  // derive_seed(settings.seed, {hash_name("propagation"), index}).
+  PropagationChain(const NetworkSettings& settings, PluginLoader& loader);
   // For tests: a chain of ready-made models.
   explicit PropagationChain(std::vector<PluginInstance<Propagation>> models);
 

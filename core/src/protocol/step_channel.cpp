@@ -122,9 +122,8 @@ ProtocolResult StepChannel::unexpected(RecordType got, const char* expected) con
 }
 
 ProtocolResult StepChannel::send_hello(const Hello& hello) {
-  return send_record("hello", true, RecordType::hello, hello.protocol_version, hello.seed,
-                     hello.robots, hello.step_ns, as_bytes(hello.scenario_yaml),
-                     as_bytes(hello.run_dir));
+  return send_record("hello", true, RecordType::hello, hello.protocol_version,
+                     as_bytes(hello.scenario_yaml), as_bytes(hello.run_dir));
 }
 
 ProtocolResult StepChannel::receive_hello(Hello& hello) {
@@ -141,61 +140,61 @@ ProtocolResult StepChannel::receive_hello(Hello& hello) {
   }
   std::span<const std::byte> yaml;
   std::span<const std::byte> dir;
-  if (!reader->get(hello.seed) || !reader->get(hello.robots) || !reader->get(hello.step_ns) ||
-      !reader->get_view(yaml, kMaxTextBytes) || !reader->get_view(dir, kMaxTextBytes) ||
+  if (!reader->get_view(yaml, kMaxTextBytes) || !reader->get_view(dir, kMaxTextBytes) ||
       !reader->at_end()) {
     return malformed(type);
   }
-  if (hello.robots == 0 || hello.robots > kMaxRobots) {
-    return over_limit("announced " + std::to_string(hello.robots) + " robots in hello; 1 to " +
-                      std::to_string(kMaxRobots) + " are allowed");
-  }
-  if (hello.step_ns <= 0) {
-    return over_limit("announced a step of " + std::to_string(hello.step_ns) + " ns in hello");
-  }
   hello.scenario_yaml = as_text(yaml);
   hello.run_dir = as_text(dir);
-  fix_limits(hello);
   return {};
 }
 
-ProtocolResult StepChannel::send_welcome(const Hello& accepted) {
-  return send_record("welcome", true, RecordType::welcome, kStepProtocolVersion, accepted.seed,
-                     accepted.robots, accepted.step_ns);
+ProtocolResult StepChannel::send_welcome(const Welcome& welcome) {
+  if (welcome.robots == 0 || welcome.robots > kMaxRobots || welcome.step_ns <= 0) {
+    return {IoStatus::corrupt, "cannot welcome " + peer_ + " to " + std::to_string(welcome.robots) +
+                                   " robots with a step of " + std::to_string(welcome.step_ns) +
+                                   " ns; 1 to " + std::to_string(kMaxRobots) +
+                                   " robots and a positive step are allowed"};
+  }
+  fix_limits(welcome);
+  return send_record("welcome", true, RecordType::welcome, kStepProtocolVersion, welcome.seed,
+                     welcome.robots, welcome.step_ns);
 }
 
-ProtocolResult StepChannel::receive_welcome(const Hello& sent) {
+ProtocolResult StepChannel::receive_welcome(const Welcome& expected) {
   RecordType type{};
   RecordReader* reader = nullptr;
   if (auto r = receive(type, reader); !r.ok()) return r;
   if (type != RecordType::welcome) return unexpected(type, "welcome");
   std::uint32_t version = 0;
-  Hello echo;
+  Welcome echo;
   if (!reader->get(version)) return malformed(type);
-  if (version != sent.protocol_version) {
+  if (version != kStepProtocolVersion) {
     return {IoStatus::corrupt, "protocol version mismatch: " + peer_ +
                                    " speaks step protocol version " + std::to_string(version) +
                                    ", this one speaks version " +
-                                   std::to_string(sent.protocol_version)};
+                                   std::to_string(kStepProtocolVersion)};
   }
   if (!reader->get(echo.seed) || !reader->get(echo.robots) || !reader->get(echo.step_ns) ||
       !reader->at_end()) {
     return malformed(type);
   }
-  if (echo.seed != sent.seed || echo.robots != sent.robots || echo.step_ns != sent.step_ns) {
+  if (echo.seed != expected.seed || echo.robots != expected.robots ||
+      echo.step_ns != expected.step_ns) {
     return {IoStatus::corrupt,
             "handshake mismatch: " + peer_ + " would simulate " + std::to_string(echo.robots) +
                 " robots, seed " + std::to_string(echo.seed) + ", step " +
-                std::to_string(echo.step_ns) + " ns; asked for " + std::to_string(sent.robots) +
-                ", " + std::to_string(sent.seed) + ", " + std::to_string(sent.step_ns) + " ns"};
+                std::to_string(echo.step_ns) + " ns; asked for " + std::to_string(expected.robots) +
+                ", " + std::to_string(expected.seed) + ", " + std::to_string(expected.step_ns) +
+                " ns"};
   }
-  fix_limits(sent);
+  fix_limits(expected);
   return {};
 }
 
-void StepChannel::fix_limits(const Hello& hello) {
-  limits_.robots = hello.robots;
-  limits_.max_messages_per_step = std::uint64_t{hello.robots} * kMaxMessagesPerRobotStep;
+void StepChannel::fix_limits(const Welcome& welcome) {
+  limits_.robots = welcome.robots;
+  limits_.max_messages_per_step = std::uint64_t{welcome.robots} * kMaxMessagesPerRobotStep;
   deliveries_owed_ = 0;
 }
 

@@ -46,16 +46,21 @@ struct ProtocolLimits {
 inline constexpr std::uint32_t kMaxRobots = 100000;
 
 // Version of the records above; both halves must speak the same one.
-inline constexpr std::uint32_t kStepProtocolVersion = 2;
+inline constexpr std::uint32_t kStepProtocolVersion = 3;
 
-// The handshake's initial parameters (the study's Fig. 1), sent by the robot half.
+// The handshake (the study's Fig. 1). The robot half's hello carries exactly one description of
+// what to simulate, the resolved scenario; the network half validates it and answers with a
+// welcome saying what it will simulate, which the robot half checks against its own scenario.
 struct Hello {
   std::uint32_t protocol_version = kStepProtocolVersion;
+  std::string scenario_yaml;  // the resolved scenario: arena, radio and every plugin's parameters
+  std::string run_dir;        // where a child network half writes (a remote one names its own)
+};
+
+struct Welcome {
   std::uint64_t seed = 0;
   std::uint32_t robots = 0;
   std::int64_t step_ns = 0;
-  std::string scenario_yaml;  // the resolved scenario: arena, radio and every plugin's parameters
-  std::string run_dir;        // where the network half writes its outputs
 };
 
 const char* to_string(RecordType type);
@@ -73,16 +78,20 @@ class StepChannel {
   // `peer` names the other half in error messages ("the network half").
   StepChannel(Transport& transport, std::string peer);
 
-  // Handshake. The network side answers a hello with welcome (echoing what it will simulate),
-  // or with failure when it cannot: a protocol version mismatch names both versions.
+  // Handshake. The network side answers a hello with welcome (what it will simulate, from the
+  // scenario it validated), or with failure when it cannot: a protocol version mismatch names
+  // both versions. Each side fixes the limits the welcome implies (send_welcome, and
+  // receive_welcome once it matches `expected`); until then a batch or a result is refused.
   ProtocolResult send_hello(const Hello& hello);
-  ProtocolResult receive_welcome(const Hello& sent);
+  ProtocolResult receive_welcome(const Welcome& expected);
   ProtocolResult receive_hello(Hello& hello);
-  ProtocolResult send_welcome(const Hello& accepted);
+  ProtocolResult send_welcome(const Welcome& welcome);
 
-  // Both sides, after the handshake: the limits `hello` implies. Until then a batch or a
-  // result is refused.
-  void fix_limits(const Hello& hello);
+  // The limits a welcome implies: exactly `robots` positions, and at most
+  // robots x kMaxMessagesPerRobotStep messages a step. The handshake calls it; tests and
+  // benchmarks that skip the handshake call it themselves.
+  void fix_limits(const Welcome& welcome);
+  [[nodiscard]] const ProtocolLimits& limits() const { return limits_; }
 
   // Robot side.
   ProtocolResult send_batch(const StepBatch& batch);

@@ -28,20 +28,20 @@ class OutboxScope {
 
 }  // namespace
 
-RobotWorld::RobotWorld(const Scenario& scenario, PluginLoader& loader) {
-  const RobotsConfig& robots = scenario.robots;
-  if (!(scenario.step_s > 0.0)) {
-    throw std::invalid_argument("step_s must be positive, not " + std::to_string(scenario.step_s));
+RobotWorld::RobotWorld(const RobotSettings& settings, PluginLoader& loader) {
+  const RobotsConfig& robots = settings.robots;
+  if (!(settings.step_s > 0.0)) {
+    throw std::invalid_argument("step_s must be positive, not " + std::to_string(settings.step_s));
   }
-  state_.step_s = scenario.step_s;
-  step_length_ = from_seconds(scenario.step_s);
+  state_.step_s = settings.step_s;
+  step_length_ = from_seconds(settings.step_s);
 
   RobotBody prototype;
   prototype.radius_m = robots.radius_m;
   prototype.axle_m = robots.axle_m;
   prototype.max_speed_mps = robots.max_speed_mps;
-  state_.bodies = place_robots(scenario.arena, robots.placement, robots.count, prototype,
-                               derive_seed(scenario.seed, {hash_name("placement")}));
+  state_.bodies = place_robots(settings.arena, robots.placement, robots.count, prototype,
+                               derive_seed(settings.seed, {hash_name("placement")}));
 
   const std::size_t count = state_.bodies.size();
   state_.rays_per_robot = robots.proximity.rays;
@@ -50,11 +50,11 @@ RobotWorld::RobotWorld(const Scenario& scenario, PluginLoader& loader) {
   state_.inboxes.resize(count);
 
   PluginArgs physics_args;
-  physics_args.params = scenario.physics.params;
-  physics_args.seed = derive_seed(scenario.seed, {hash_name("physics")});
+  physics_args.params = settings.physics.params;
+  physics_args.seed = derive_seed(settings.seed, {hash_name("physics")});
   physics_args.shared_seed = physics_args.seed;
-  physics_ = loader.create<Physics>(scenario.physics.name, physics_args);
-  physics_->setup(scenario.arena, state_.bodies);
+  physics_ = loader.create<Physics>(settings.physics.name, physics_args);
+  physics_->setup(settings.arena, state_.bodies);
 
   controllers_per_robot_ = robots.controllers.size();
   controllers_.reserve(count * controllers_per_robot_);
@@ -65,8 +65,8 @@ RobotWorld::RobotWorld(const Scenario& scenario, PluginLoader& loader) {
       const PluginChoice& choice = robots.controllers[c];
       PluginArgs args;
       args.params = choice.params;
-      args.seed = derive_seed(scenario.seed, {hash_name("controller"), c, r});
-      args.shared_seed = derive_seed(scenario.seed, {hash_name("controller"), c});
+      args.seed = derive_seed(settings.seed, {hash_name("controller"), c, r});
+      args.shared_seed = derive_seed(settings.seed, {hash_name("controller"), c});
       args.instance = static_cast<std::uint32_t>(r);
       args.instance_count = static_cast<std::uint32_t>(count);
       controllers_.push_back(loader.create<Controller>(choice.name, args));

@@ -11,7 +11,7 @@
 #include "protocol/step_data.hpp"
 #include "robot/controller_metrics.hpp"
 #include "robot/robot_context.hpp"
-#include "scenario/scenario.hpp"
+#include "robot/robot_settings.hpp"
 #include "swarmnet/controller.hpp"
 #include "swarmnet/physics.hpp"
 
@@ -28,7 +28,7 @@ class RobotWorld {
   // Streams: placement derive_seed(seed, {hash_name("placement")}); physics seed and shared seed
   // derive_seed(seed, {hash_name("physics")}); controller entry c on robot r
   // derive_seed(seed, {hash_name("controller"), c, r}), shared derive_seed(seed, {.., c}).
-  RobotWorld(const Scenario& scenario, PluginLoader& loader);
+  RobotWorld(const RobotSettings& settings, PluginLoader& loader);
 
   RobotWorld(const RobotWorld&) = delete;
   RobotWorld& operator=(const RobotWorld&) = delete;

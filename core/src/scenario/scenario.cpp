@@ -10,4 +10,24 @@ std::uint64_t Scenario::step_count() const {
   return static_cast<std::uint64_t>(std::llround(duration_s / step_s));
 }
 
+NetworkSettings Scenario::network_settings() const {
+  NetworkSettings settings;
+  settings.seed = seed;
+  settings.step_s = step_s;
+  settings.nodes = robots.count;
+  settings.arena = arena;
+  settings.network = network;
+  return settings;
+}
+
+RobotSettings Scenario::robot_settings() const {
+  RobotSettings settings;
+  settings.seed = seed;
+  settings.step_s = step_s;
+  settings.arena = arena;
+  settings.robots = robots;
+  settings.physics = physics;
+  return settings;
+}
+
 }  // namespace swarmnet

@@ -120,7 +120,7 @@ ReplayOutcome replay_network(const ReplayInputs& inputs, const std::filesystem::
 
   const double cpu_start = thread_cpu_seconds();
   AtomicFile trace(out_dir / kPacketTraceFile);
-  NetworkSimulator simulator(scenario, loader, &trace.stream());
+  NetworkSimulator simulator(scenario.network_settings(), loader, &trace.stream());
   StepBatch batch;
   StepResult result;
   std::size_t next = 0;

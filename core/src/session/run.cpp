@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "coupling/cpu_clock.hpp"
+#include "coupling/network_half.hpp"
 #include "coupling/network_link.hpp"
 #include "coupling/stop_signal.hpp"
 #include "display/progress_line.hpp"
@@ -96,13 +97,11 @@ void remove_partial_files(const std::filesystem::path& dir) {
 void handshake(const Scenario& scenario, const std::filesystem::path& run_dir,
                StepChannel& channel) {
   Hello hello;
-  hello.seed = scenario.seed;
-  hello.robots = scenario.robots.count;
-  hello.step_ns = from_seconds(scenario.step_s).count();
   hello.scenario_yaml = scenario.resolved_yaml;
   hello.run_dir = std::filesystem::absolute(run_dir).string();
   if (const ProtocolResult r = channel.send_hello(hello); !r.ok()) throw PeerLost(r.error);
-  if (const ProtocolResult r = channel.receive_welcome(hello); !r.ok()) throw PeerLost(r.error);
+  if (const ProtocolResult r = channel.receive_welcome(welcome_for(scenario)); !r.ok())
+    throw PeerLost(r.error);
 }
 
 // Drives the robot half over `channel` for every step; returns the network half's report.
@@ -167,7 +166,7 @@ NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, Step
 
 }  // namespace
 
-RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
+RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const RunOptions& options) {
   RunOutcome outcome;
   outcome.dir = scenario.output.dir;
   const std::vector<std::string> notes = prepare_run_directory(outcome.dir, options.overwrite);
@@ -183,9 +182,8 @@ RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
   const double cpu_start = thread_cpu_seconds();
   try {
-    PluginLoader loader(scenario.plugin_paths);
     log_plugins(log, scenario, loader);
-    RobotWorld world(scenario, loader);
+    RobotWorld world(scenario.robot_settings(), loader);
 
     std::optional<AtomicFile> mobility_file;
     std::optional<MobilityTraceWriter> mobility;
@@ -213,7 +211,7 @@ RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options) {
     for (const std::string& name : remove_stale_segments()) {
       log.line("removed /dev/shm/" + name + ", left behind by a run that crashed");
     }
-    const auto link = open_network_link(scenario, outcome.dir, options.link);
+    const auto link = open_network_link(scenario, loader, outcome.dir, options.link);
     StepChannel channel(link->transport(), "the network half");
     log.line("transport: " + link->describe());
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "coupling/network_link.hpp"
+#include "plugin/plugin_loader.hpp"
 #include "scenario/scenario.hpp"
 
 namespace swarmnet {
@@ -22,9 +23,11 @@ struct RunOutcome {
   nlohmann::ordered_json summary;
 };
 
-// Runs `scenario` to completion and writes its run directory. Throws RunError (or the error that
-// stopped the run) with a message naming what failed; files of a failed run are not left under
-// their final names, except run.log, which then ends with the error.
-RunOutcome run_scenario(const Scenario& scenario, const RunOptions& options);
+// Runs `scenario` to completion and writes its run directory. Plugins are created with `loader`,
+// the one that resolved them when the scenario was validated (load_scenario), so that a run
+// resolves each plugin once. Throws RunError (or the error that stopped the run) with a message
+// naming what failed; files of a failed run are not left under their final names, except
+// run.log, which then ends with the error.
+RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const RunOptions& options);
 
 }  // namespace swarmnet

@@ -1,13 +1,13 @@
-// A scenario's choice of a plugin with every parameter at its declared default: what a scenario
+// A choice of a plugin with every parameter at its declared default: what a scenario
 // that names the plugin and sets nothing resolves to. For tests and benchmarks that build
-// scenarios in code.
+// settings in code.
 #pragma once
 
 #include <string>
 
 #include "plugin/param_defaults.hpp"
+#include "plugin/plugin_choice.hpp"
 #include "plugin/plugin_loader.hpp"
-#include "scenario/scenario.hpp"
 
 namespace swarmnet {
 

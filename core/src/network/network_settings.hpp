@@ -1,0 +1,55 @@
+// What the network half is set up with (DESIGN.md section 1): typed settings, no YAML. The
+// scenario loader fills them from a validated scenario (Scenario::network_settings); tests and
+// benchmarks build them by hand.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "plugin/plugin_choice.hpp"
+#include "swarmnet/arena.hpp"
+
+namespace swarmnet {
+
+enum class PhyModel : std::uint8_t { threshold, sinr };
+
+// The radio of every node (network/phy.hpp describes both reception models). Defaults of the
+// sinr model's keys are ns-3.37's YansWifiPhy defaults for 802.11a.
+struct PhyConfig {
+  double tx_power_dbm = 16.0206;
+  double rx_sensitivity_dbm = -96.0;  // threshold model: frames weaker than this are not received
+  PhyModel model = PhyModel::threshold;
+  double tx_gain_db = 0.0;
+  double rx_gain_db = 0.0;
+  double bandwidth_hz = 20.0e6;
+  double noise_figure_db = 7.0;
+  double energy_detection_dbm = -62.0;   // CCA-ED: total energy that makes the medium busy
+  double cca_threshold_dbm = -82.0;      // weakest frame whose preamble is detected (and sensed)
+  double preamble_snr_db = 4.0;          // SINR a preamble needs to be detected
+  double interference_floor_db = -10.0;  // signals below noise floor + this are ignored
+  // Signals below cca_threshold + this are quiet (not carrier-sensed); the default makes none.
+  double sensing_floor_db = -100.0;
+};
+
+struct ChannelConfig {
+  bool cutoff = true;  // visit only nodes that can possibly hear a frame (DESIGN.md section 7)
+};
+
+// The layers of every node, as the scenario's `network:` section chose them.
+struct NetworkConfig {
+  std::vector<PluginChoice> propagation;  // applied in order
+  PhyConfig phy;
+  ChannelConfig channel;
+  PluginChoice mac;
+  PluginChoice routing;
+};
+
+struct NetworkSettings {
+  std::uint64_t seed = 1;   // master seed: every stream is derived from it (swarmnet/random.hpp)
+  double step_s = 0.1;      // the step window; at least 1 ns
+  std::uint32_t nodes = 0;  // one per robot
+  Arena arena;              // the channel's grid covers its rectangle
+  NetworkConfig network;
+};
+
+}  // namespace swarmnet

@@ -1,0 +1,37 @@
+// What the robot half is set up with: typed settings, no YAML. The scenario loader fills them
+// from a validated scenario (Scenario::robot_settings); tests build them by hand.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "plugin/plugin_choice.hpp"
+#include "swarmnet/arena.hpp"
+#include "swarmnet/vector.hpp"
+
+namespace swarmnet {
+
+struct ProximityConfig {
+  std::uint32_t rays = 24;
+  double range_m = 0.3;
+};
+
+struct RobotsConfig {
+  std::uint32_t count = 0;
+  double radius_m = 0.085;
+  double axle_m = 0.14;
+  double max_speed_mps = 1.0;
+  Rect placement;  // region robots start in (defaults to the whole arena)
+  ProximityConfig proximity;
+  std::vector<PluginChoice> controllers;  // run in this order on every step
+};
+
+struct RobotSettings {
+  std::uint64_t seed = 1;  // master seed: every stream is derived from it (swarmnet/random.hpp)
+  double step_s = 0.1;     // must be positive
+  Arena arena;
+  RobotsConfig robots;
+  PluginChoice physics;
+};
+
+}  // namespace swarmnet
