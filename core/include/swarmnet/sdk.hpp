@@ -10,6 +10,7 @@
 #include "swarmnet/params.hpp"
 #include "swarmnet/physics.hpp"
 #include "swarmnet/plugin.hpp"
+#include "swarmnet/path_loss.hpp"
 #include "swarmnet/propagation.hpp"
 #include "swarmnet/random.hpp"
 #include "swarmnet/robot_body.hpp"

@@ -44,14 +44,6 @@ double Friis::loss_db(double distance_m) const {
   return std::max(friis_loss_db(distance_m, lambda_m_, system_loss_db_), min_loss_db_);
 }
 
-double Friis::rx_power_dbm(double input_dbm, const RadioLink& link) const {
-  return input_dbm - loss_db(link.distance_m);
-}
-
-double Friis::max_rx_power_dbm(double input_dbm, double distance_m) const {
-  return input_dbm - loss_db(distance_m);
-}
-
 }  // namespace swarmnet::friis
 
 SWARMNET_PLUGIN(swarmnet::friis::Friis)

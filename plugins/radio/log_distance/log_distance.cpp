@@ -34,14 +34,6 @@ double LogDistance::loss_db(double distance_m) const {
   return reference_loss_db_ + 10.0 * exponent_ * std::log10(distance_m / reference_distance_m_);
 }
 
-double LogDistance::rx_power_dbm(double input_dbm, const RadioLink& link) const {
-  return input_dbm - loss_db(link.distance_m);
-}
-
-double LogDistance::max_rx_power_dbm(double input_dbm, double distance_m) const {
-  return input_dbm - loss_db(distance_m);
-}
-
 }  // namespace swarmnet::log_distance
 
 SWARMNET_PLUGIN(swarmnet::log_distance::LogDistance)

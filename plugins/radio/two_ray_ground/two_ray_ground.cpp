@@ -48,14 +48,6 @@ double TwoRayGround::loss_db(double distance_m) const {
   return std::max(loss + system_loss_db_, 0.0);
 }
 
-double TwoRayGround::rx_power_dbm(double input_dbm, const RadioLink& link) const {
-  return input_dbm - loss_db(link.distance_m);
-}
-
-double TwoRayGround::max_rx_power_dbm(double input_dbm, double distance_m) const {
-  return input_dbm - loss_db(distance_m);
-}
-
 }  // namespace swarmnet::two_ray_ground
 
 SWARMNET_PLUGIN(swarmnet::two_ray_ground::TwoRayGround)

@@ -2,20 +2,16 @@
 // the two-ray ground-reflection d^4 law beyond it).
 #pragma once
 
-#include "swarmnet/propagation.hpp"
+#include "swarmnet/path_loss.hpp"
 
 namespace swarmnet::two_ray_ground {
 
-class TwoRayGround final : public Propagation {
+class TwoRayGround final : public PathLoss {
  public:
   static PluginInfo info();
   explicit TwoRayGround(const PluginArgs& args);
 
-  [[nodiscard]] double rx_power_dbm(double input_dbm, const RadioLink& link) const override;
-  [[nodiscard]] double max_rx_power_dbm(double input_dbm, double distance_m) const override;
-  [[nodiscard]] bool varies_per_frame() const override { return false; }
-
-  [[nodiscard]] double loss_db(double distance_m) const;
+  [[nodiscard]] double loss_db(double distance_m) const override;
   [[nodiscard]] double crossover_m() const { return crossover_m_; }
 
  private:
