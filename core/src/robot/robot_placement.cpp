@@ -8,44 +8,39 @@
 #include <string>
 
 #include "swarmnet/random.hpp"
+#include "swarmnet/spatial_grid.hpp"
 
 namespace swarmnet {
 
 namespace {
 
-// Placed centres bucketed in a uniform grid over the sampling rectangle; each cell is a linked
-// list through `next_`. Cells are at least one robot diameter wide, so a candidate can only touch
-// robots in its own and the 8 surrounding cells; in a sparse region they grow to about 4 cells per
-// robot so that the grid stays O(count) in size.
+// Placed centres, added one at a time, in a linked list per cell of a uniform grid over the
+// sampling rectangle (`next_`). Cells are at least one robot diameter wide, so a candidate can only
+// touch robots in its own and the 8 surrounding cells; in a sparse region they grow to about 4
+// cells per robot so that the grid stays O(count) in size.
 class PlacementGrid {
  public:
-  PlacementGrid(const Rect& bounds, double radius_m, std::uint32_t count) : bounds_(bounds) {
+  PlacementGrid(const Rect& bounds, double radius_m, std::uint32_t count) {
     const double area_m2 = std::max(bounds.width_m() * bounds.height_m(), 0.0);
-    cell_m_ = std::max(2.0 * radius_m,
-                       std::sqrt(area_m2 / (4.0 * static_cast<double>(std::max(count, 1U)))));
-    columns_ = cells_along(bounds.width_m());
-    rows_ = cells_along(bounds.height_m());
-    head_.assign(columns_ * rows_, kEnd);
+    cells_ = GridCells(bounds,
+                       std::max(2.0 * radius_m, std::sqrt(area_m2 / (4.0 * std::max(count, 1U)))));
+    head_.assign(cells_.count(), kEnd);
     next_.reserve(count);
     centres_.reserve(count);
   }
 
   [[nodiscard]] bool touches_any(const Vec2& p, double contact_m) const {
-    const std::size_t column = column_of(p.x());
-    const std::size_t row = row_of(p.y());
-    for (std::size_t r = row > 0 ? row - 1 : 0; r <= std::min(row + 1, rows_ - 1); ++r) {
-      for (std::size_t c = column > 0 ? column - 1 : 0; c <= std::min(column + 1, columns_ - 1);
-           ++c) {
-        for (std::uint32_t i = head_[r * columns_ + c]; i != kEnd; i = next_[i]) {
-          if ((centres_[i] - p).squaredNorm() < contact_m * contact_m) return true;
-        }
+    bool touches = false;
+    cells_.for_each_cell_near(p, contact_m, [&](std::size_t cell) {
+      for (std::uint32_t i = head_[cell]; i != kEnd && !touches; i = next_[i]) {
+        touches = (centres_[i] - p).squaredNorm() < contact_m * contact_m;
       }
-    }
-    return false;
+    });
+    return touches;
   }
 
   void insert(const Vec2& p) {
-    const std::size_t cell = row_of(p.y()) * columns_ + column_of(p.x());
+    const std::uint32_t cell = cells_.cell_of(p);
     next_.push_back(head_[cell]);
     head_[cell] = static_cast<std::uint32_t>(centres_.size());
     centres_.push_back(p);
@@ -54,22 +49,7 @@ class PlacementGrid {
  private:
   static constexpr std::uint32_t kEnd = 0xFFFFFFFFU;
 
-  [[nodiscard]] std::size_t cells_along(double length_m) const {
-    return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(length_m / cell_m_)));
-  }
-  [[nodiscard]] std::size_t column_of(double x) const {
-    const double c = std::floor((x - bounds_.x_min_m) / cell_m_);
-    return static_cast<std::size_t>(std::clamp(c, 0.0, static_cast<double>(columns_ - 1)));
-  }
-  [[nodiscard]] std::size_t row_of(double y) const {
-    const double r = std::floor((y - bounds_.y_min_m) / cell_m_);
-    return static_cast<std::size_t>(std::clamp(r, 0.0, static_cast<double>(rows_ - 1)));
-  }
-
-  Rect bounds_;
-  double cell_m_ = 1.0;
-  std::size_t columns_ = 1;
-  std::size_t rows_ = 1;
+  GridCells cells_;
   std::vector<std::uint32_t> head_;
   std::vector<std::uint32_t> next_;
   std::vector<Vec2> centres_;
