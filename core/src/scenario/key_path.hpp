@@ -14,6 +14,17 @@ class KeyPath {
   KeyPath() = default;
   explicit KeyPath(std::vector<std::string> parts) : parts_(std::move(parts)) {}
 
+  // "a.b.c" split at every dot; empty parts are kept (a caller that refuses them can see them).
+  [[nodiscard]] static KeyPath parse(std::string_view dotted) {
+    KeyPath path;
+    for (std::size_t start = 0;;) {
+      const std::size_t dot = dotted.find('.', start);
+      path.parts_.emplace_back(dotted.substr(start, dot - start));
+      if (dot == std::string_view::npos) return path;
+      start = dot + 1;
+    }
+  }
+
   [[nodiscard]] KeyPath operator/(std::string_view key) const {
     KeyPath child = *this;
     child.parts_.emplace_back(key);

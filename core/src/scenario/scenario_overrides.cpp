@@ -10,17 +10,6 @@ namespace swarmnet {
 
 namespace {
 
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t end = text.find(separator, start);
-    parts.push_back(text.substr(start, end - start));
-    if (end == std::string::npos) return parts;
-    start = end + 1;
-  }
-}
-
 std::optional<std::size_t> parse_index(const std::string& text) {
   if (text.empty() ||
       !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; })) {
@@ -115,7 +104,7 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
       report("", quoted + " has no '='", form);
       continue;
     }
-    const std::vector<std::string> parts = split(key, '.');
+    const std::vector<std::string> parts = KeyPath::parse(key).parts();
     if (key.empty() ||
         std::any_of(parts.begin(), parts.end(), [](const auto& p) { return p.empty(); })) {
       report("", quoted + " has an empty key path or component", form);
