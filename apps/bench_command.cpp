@@ -1,6 +1,5 @@
 #include "bench_command.hpp"
 
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -10,6 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+
+#include "coupling/process_spawn.hpp"
 
 namespace swarmnet {
 
@@ -63,13 +64,10 @@ int bench_transport_command(const std::filesystem::path& out, double min_time_s)
   std::vector<std::string> args = {binary.string(), "--benchmark_out=" + out.string(),
                                    "--benchmark_out_format=json",
                                    "--benchmark_min_time=" + std::to_string(min_time_s)};
-  std::vector<char*> argv;
-  argv.reserve(args.size() + 1);
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (posix_spawn(&pid, binary.c_str(), nullptr, nullptr, argv.data(), environ) != 0) {
-    std::fprintf(stderr, "swarmnet: error: cannot start %s\n", binary.c_str());
+  std::string error;
+  const pid_t pid = spawn_process({binary, std::move(args), {}, std::nullopt}, error);
+  if (pid < 0) {
+    std::fprintf(stderr, "swarmnet: error: cannot start %s: %s\n", binary.c_str(), error.c_str());
     return 1;
   }
   int status = 0;

@@ -1,7 +1,6 @@
 #include "sweep_command.hpp"
 
 #include <fcntl.h>
-#include <spawn.h>
 #include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -20,6 +19,7 @@
 #include <thread>
 #include <vector>
 
+#include "coupling/process_spawn.hpp"
 #include "coupling/stop_signal.hpp"
 #include "outputs/atomic_file.hpp"
 #include "outputs/output_files.hpp"
@@ -118,28 +118,14 @@ pid_t spawn_run(const std::filesystem::path& exe, const SweepSpec& spec, const S
   // A run redone (failed or interrupted before) replaces what it left.
   args.insert(args.end(), {"--seed", std::to_string(run.seed), "--out", dir.string(), "--quiet",
                            "--overwrite"});
-  std::vector<char*> argv;
-  argv.reserve(args.size() + 1);
-  for (auto& arg : args) argv.push_back(arg.data());
-  argv.push_back(nullptr);
-
-  const std::string log = (dir / kChildLog).string();
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
-                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  SpawnRequest request;
+  request.executable = exe;
+  request.arguments = std::move(args);
+  request.output_file = dir / kChildLog;
   // The run dies with the sweep (SIGTERM, so it still cleans up): no orphans after a kill.
-  std::vector<char*> envp;
-  for (char** e = environ; *e != nullptr; ++e) envp.push_back(*e);
-  std::string parent = std::string(kParentVariable) + "=" + std::to_string(::getpid());
-  envp.push_back(parent.data());
-  envp.push_back(nullptr);
-  pid_t pid = 0;
-  const int error = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
-  posix_spawn_file_actions_destroy(&actions);
-  return error == 0 ? pid : -1;
+  request.extra_environment = {std::string(kParentVariable) + "=" + std::to_string(::getpid())};
+  std::string error;
+  return spawn_process(request, error);
 }
 
 // Holds an exclusive lock on the sweep directory for this process's life: a second sweep into

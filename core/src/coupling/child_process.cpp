@@ -1,7 +1,6 @@
 #include "coupling/child_process.hpp"
 
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -9,26 +8,21 @@
 #include <cstring>
 #include <thread>
 
+#include "coupling/process_spawn.hpp"
 #include "outputs/run_error.hpp"
 
 namespace swarmnet {
 
 ChildProcess::ChildProcess(const std::vector<std::string>& arguments,
                            const std::vector<std::string>& environment) {
-  const std::string executable = "/proc/self/exe";
-  std::vector<char*> argv;
-  std::string program = "swarmnet";
-  argv.push_back(program.data());
-  std::vector<std::string> copies = arguments;
-  for (auto& argument : copies) argv.push_back(argument.data());
-  argv.push_back(nullptr);
-  std::vector<std::string> added = environment;
-  std::vector<char*> envp;
-  for (char** e = environ; *e != nullptr; ++e) envp.push_back(*e);
-  for (auto& entry : added) envp.push_back(entry.data());
-  envp.push_back(nullptr);
-  const int rc = posix_spawn(&pid_, executable.c_str(), nullptr, nullptr, argv.data(), envp.data());
-  if (rc != 0) throw RunError(std::string("cannot start the network half: ") + std::strerror(rc));
+  SpawnRequest request;
+  request.executable = "/proc/self/exe";
+  request.arguments = {"swarmnet"};
+  request.arguments.insert(request.arguments.end(), arguments.begin(), arguments.end());
+  request.extra_environment = environment;
+  std::string error;
+  pid_ = spawn_process(request, error);
+  if (pid_ < 0) throw RunError("cannot start the network half: " + error);
 }
 
 ChildProcess::~ChildProcess() {
