@@ -8,7 +8,7 @@ formatter=$(command -v clang-format || command -v clang-format-14 || true)
 report=$(mktemp)
 trap 'rm -f "$report"' EXIT
 if ! git ls-files '*.cpp' '*.hpp' | xargs "$formatter" --dry-run --Werror 2>"$report"; then
-  grep "warning:" "$report" | cut -d: -f1 | sort -u | sed 's/^/check_format: not formatted: /' >&2
+  grep -E "(warning|error):" "$report" | cut -d: -f1 | sort -u | sed 's/^/check_format: not formatted: /' >&2
   echo "check_format: fix with: git ls-files '*.cpp' '*.hpp' | xargs clang-format -i" >&2
   exit 1
 fi
