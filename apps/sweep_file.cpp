@@ -3,39 +3,32 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <optional>
 #include <set>
 #include <stdexcept>
 
+#include "scenario/key_path.hpp"
+#include "scenario/problem_list.hpp"
+#include "scenario/yaml_hazard.hpp"
 #include "text/text_join.hpp"
 
 namespace swarmnet {
 
 namespace {
 
-class Problems {
- public:
-  explicit Problems(std::string file) : file_(std::move(file)) {}
-  [[nodiscard]] std::string locate(const YAML::Node& node) const {
-    const YAML::Mark mark = node.Mark();
-    if (mark.is_null() || mark.line < 0) return file_;
-    return file_ + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
-  }
-  void add(const YAML::Node& node, const std::string& key, const std::string& what,
-           const std::string& expected = "") {
-    std::string line = locate(node) + ": " + key + ": " + what;
-    if (!expected.empty()) line += "; expected " + expected;
-    lines_.push_back(std::move(line));
-  }
-  void add_line(std::string line) { lines_.push_back(std::move(line)); }
-  [[nodiscard]] const std::vector<std::string>& lines() const { return lines_; }
+// A sweep file's problems are reported as a scenario's are (scenario/problem_list.hpp).
+void add_problem(ProblemList& problems, const YAML::Node& node, const std::string& key,
+                 const std::string& what, const std::string& expected = "") {
+  problems.add(KeyPath::parse(key), node.Mark(), what, expected);
+}
 
- private:
-  std::string file_;
-  std::vector<std::string> lines_;
-};
+std::string locate(const ProblemList& problems, const YAML::Node& node) {
+  return problems.locate(KeyPath{}, node.Mark());
+}
 
 std::string flow_text(const YAML::Node& node) {
   YAML::Emitter out;
@@ -65,39 +58,28 @@ std::string id_part(const YAML::Node& node, std::size_t index) {
   return text;
 }
 
-std::vector<std::string> split_key(const std::string& key) {
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t dot = key.find('.', start);
-    parts.push_back(key.substr(start, dot - start));
-    if (dot == std::string::npos) break;
-    start = dot + 1;
-  }
-  return parts;
-}
-
 bool valid_key(const std::string& key) {
   if (key.empty()) return false;
-  return std::ranges::none_of(split_key(key), [](const std::string& p) { return p.empty(); });
+  return std::ranges::none_of(KeyPath::parse(key).parts(),
+                              [](const std::string& p) { return p.empty(); });
 }
 
 // The short name of a key: its last component, or the one before when that is "plugin" (so that
 // network.routing.plugin reads "routing").
 std::string short_name(const std::string& key) {
-  const auto parts = split_key(key);
+  const auto parts = KeyPath::parse(key).parts();
   if (parts.size() >= 2 && parts.back() == "plugin") return parts[parts.size() - 2];
   return parts.back();
 }
 
-std::uint64_t read_seed(const YAML::Node& node, Problems& problems, const std::string& key,
+std::uint64_t read_seed(const YAML::Node& node, ProblemList& problems, const std::string& key,
                         bool& ok) {
   try {
     const auto text = node.IsScalar() ? node.Scalar() : std::string();
     if (!text.empty() && text.front() != '-') return node.as<std::uint64_t>();
   } catch (const YAML::Exception&) {
   }
-  problems.add(node, key, "not a seed", "an integer 0..2^64-1");
+  add_problem(problems, node, key, "not a seed", "an integer 0..2^64-1");
   ok = false;
   return 0;
 }
@@ -112,39 +94,39 @@ bool valid_axis_name(const std::string& name) {
 
 // The values of one swept key; empty (with a problem added) unless `values` is a non-empty list.
 std::vector<SweepValue> read_values(const YAML::Node& values, const std::string& where,
-                                    Problems& problems) {
+                                    ProblemList& problems) {
   std::vector<SweepValue> read;
   if (!values.IsSequence() || values.size() == 0) {
-    problems.add(values, where, "not a non-empty list", "[value, value, ...]");
+    add_problem(problems, values, where, "not a non-empty list", "[value, value, ...]");
     return read;
   }
   for (std::size_t i = 0; i < values.size(); ++i) {
-    read.push_back({flow_text(values[i]), id_part(values[i], i), problems.locate(values[i])});
+    read.push_back({flow_text(values[i]), id_part(values[i], i), locate(problems, values[i])});
   }
   return read;
 }
 
 // Run ids are made of the points' id parts, so two points of an axis must not share one.
 void check_distinct_ids(const SweepAxis& axis, const YAML::Node& values, const std::string& where,
-                        Problems& problems) {
+                        ProblemList& problems) {
   std::set<std::string> seen;
   for (std::size_t i = 0; i < axis.points.size(); ++i) {
     if (!seen.insert(axis.points[i].id_part()).second) {
-      problems.add(values[i], where,
-                   "value " + axis.points[i].values.front().text +
-                       " gives the same run id as an earlier one",
-                   axis.linked ? "distinct values of the first key, which names the runs"
-                               : "distinct values");
+      add_problem(problems, values[i], where,
+                  "value " + axis.points[i].values.front().text +
+                      " gives the same run id as an earlier one",
+                  axis.linked ? "distinct values of the first key, which names the runs"
+                              : "distinct values");
     }
   }
 }
 
 // `key: [v1, v2, ...]`: one key, one point per value.
 std::optional<SweepAxis> read_plain_axis(const YAML::Node& key_node, const YAML::Node& values,
-                                         Problems& problems) {
+                                         ProblemList& problems) {
   const std::string key = key_node.as<std::string>();
   if (!valid_key(key)) {
-    problems.add(key_node, "grid." + key, "not a key path", "a.b.c");
+    add_problem(problems, key_node, "grid." + key, "not a key path", "a.b.c");
     return std::nullopt;
   }
   auto read = read_values(values, "grid." + key, problems);
@@ -160,23 +142,23 @@ std::optional<SweepAxis> read_plain_axis(const YAML::Node& key_node, const YAML:
 // `name: {key: [...], key: [...]}`: several keys that vary together. Every list has as many values
 // as the first, and the i-th values of all keys make the i-th point.
 std::optional<SweepAxis> read_linked_axis(const YAML::Node& name_node, const YAML::Node& keys,
-                                          Problems& problems) {
+                                          ProblemList& problems) {
   const std::string name = name_node.as<std::string>();
   const std::string where = "grid." + name;
   constexpr const char* kLinkedForm =
       "a linked axis, name: {key path: [values], key path: [values], ...} with a word "
       "(letters, digits, _ or -) as its name";
   if (!valid_axis_name(name)) {
-    problems.add(name_node, where, "a mapping here is a linked axis, which needs a name",
-                 kLinkedForm);
+    add_problem(problems, name_node, where, "a mapping here is a linked axis, which needs a name",
+                kLinkedForm);
     return std::nullopt;
   }
   if (name == "seed") {
-    problems.add(name_node, where, "seed names the seed in run ids", "another name");
+    add_problem(problems, name_node, where, "seed names the seed in run ids", "another name");
     return std::nullopt;
   }
   if (keys.size() == 0) {
-    problems.add(keys, where, "an empty linked axis", kLinkedForm);
+    add_problem(problems, keys, where, "an empty linked axis", kLinkedForm);
     return std::nullopt;
   }
   SweepAxis axis;
@@ -188,7 +170,7 @@ std::optional<SweepAxis> read_linked_axis(const YAML::Node& name_node, const YAM
   for (const auto& entry : keys) {
     const std::string key = entry.first.as<std::string>();
     if (!valid_key(key)) {
-      problems.add(entry.first, where + "." + key, "not a key path", "a.b.c");
+      add_problem(problems, entry.first, where + "." + key, "not a key path", "a.b.c");
       ok = false;
       continue;
     }
@@ -200,11 +182,11 @@ std::optional<SweepAxis> read_linked_axis(const YAML::Node& name_node, const YAM
     if (columns.empty()) {
       first_values = entry.second;
     } else if (read.size() != columns.front().size()) {
-      problems.add(entry.second, where + "." + key,
-                   std::to_string(read.size()) + (read.size() == 1 ? " value" : " values") +
-                       " where " + axis.keys.front() + " has " +
-                       std::to_string(columns.front().size()),
-                   "one value per point: every key of a linked axis has as many values");
+      add_problem(problems, entry.second, where + "." + key,
+                  std::to_string(read.size()) + (read.size() == 1 ? " value" : " values") +
+                      " where " + axis.keys.front() + " has " +
+                      std::to_string(columns.front().size()),
+                  "one value per point: every key of a linked axis has as many values");
       ok = false;
       continue;
     }
@@ -222,7 +204,7 @@ std::optional<SweepAxis> read_linked_axis(const YAML::Node& name_node, const YAM
 }
 
 // A key may be set once: under set, or on one axis.
-void check_each_key_once(const SweepSpec& spec, Problems& problems) {
+void check_each_key_once(const SweepSpec& spec, ProblemList& problems) {
   std::map<std::string, std::string> owner;  // key -> where it was given first
   for (const auto& fixed : spec.fixed) owner.emplace(fixed.key, "set");
   for (const auto& axis : spec.axes) {
@@ -242,7 +224,7 @@ void check_each_key_once(const SweepSpec& spec, Problems& problems) {
 
 // Plain axes go by their key's short name unless another axis has it too (or it is "seed", which
 // run ids already use); then by the whole key path with '-' for '.'.
-void name_axes(std::vector<SweepAxis>& axes, Problems& problems) {
+void name_axes(std::vector<SweepAxis>& axes, ProblemList& problems) {
   for (auto& axis : axes) {
     if (axis.linked) continue;
     const auto clashes = std::ranges::count_if(axes, [&](const SweepAxis& other) {
@@ -279,12 +261,21 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
   SweepSpec spec;
   spec.file = file;
   const std::string name = file.string();
-  Problems problems(name);
+  ProblemList problems(name);
   YAML::Node root;
   try {
-    root = YAML::LoadFile(name);
-  } catch (const YAML::BadFile&) {
-    throw SweepError({name + ": cannot read the file"});
+    std::ifstream in(file, std::ios::binary);
+    std::error_code ec;
+    if (!in || !std::filesystem::is_regular_file(file, ec)) {
+      throw SweepError({name + ": cannot read the file (a sweep file is a regular YAML file)"});
+    }
+    const std::string text{std::istreambuf_iterator<char>(in), {}};
+    if (const auto hazard = find_yaml_hazard(text)) {
+      throw SweepError({name + ":" + std::to_string(hazard->line + 1) + ":" +
+                        std::to_string(hazard->column + 1) +
+                        ": not valid YAML: a document cannot begin with ','"});
+    }
+    root = YAML::Load(text);
   } catch (const YAML::ParserException& error) {
     throw SweepError({name + ":" + std::to_string(error.mark.line + 1) + ":" +
                       std::to_string(error.mark.column + 1) + ": not valid YAML: " + error.msg});
@@ -294,7 +285,7 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
   for (const auto& entry : root) {
     const std::string key = entry.first.as<std::string>();
     if (key != "base" && key != "out" && key != "set" && key != "grid" && key != "seeds") {
-      problems.add(entry.first, key, "unknown key", kForm);
+      add_problem(problems, entry.first, key, "unknown key", kForm);
     }
   }
 
@@ -304,18 +295,19 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
                       ": base: missing; expected the scenario file to sweep, relative to "
                       "the sweep file");
   } else if (!base.IsScalar() || base.Scalar().empty()) {
-    problems.add(base, "base", "not a file name", "a scenario file relative to the sweep file");
+    add_problem(problems, base, "base", "not a file name",
+                "a scenario file relative to the sweep file");
   } else {
     spec.base = std::filesystem::absolute(file.parent_path() / base.Scalar()).lexically_normal();
     if (!std::filesystem::is_regular_file(spec.base)) {
-      problems.add(base, "base", "no such file: " + spec.base.string(),
-                   "an existing scenario file");
+      add_problem(problems, base, "base", "no such file: " + spec.base.string(),
+                  "an existing scenario file");
     }
   }
 
   if (const YAML::Node out = root["out"]) {
     if (!out.IsScalar() || out.Scalar().empty()) {
-      problems.add(out, "out", "not a directory name", "a path");
+      add_problem(problems, out, "out", "not a directory name", "a path");
     } else {
       spec.out = out.Scalar();
     }
@@ -323,15 +315,15 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
 
   if (const YAML::Node set = root["set"]) {
     if (!set.IsMap()) {
-      problems.add(set, "set", "not a mapping", "key path: value, e.g. duration_s: 60");
+      add_problem(problems, set, "set", "not a mapping", "key path: value, e.g. duration_s: 60");
     } else {
       for (const auto& entry : set) {
         const std::string key = entry.first.as<std::string>();
         if (!valid_key(key)) {
-          problems.add(entry.first, "set." + key, "not a key path", "a.b.c");
+          add_problem(problems, entry.first, "set." + key, "not a key path", "a.b.c");
           continue;
         }
-        spec.fixed.push_back({key, flow_text(entry.second), problems.locate(entry.second)});
+        spec.fixed.push_back({key, flow_text(entry.second), locate(problems, entry.second)});
       }
     }
   }
@@ -342,8 +334,8 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
                       ": grid: missing; expected key path: list of values (an empty "
                       "mapping {} runs the base scenario alone)");
   } else if (!grid.IsMap()) {
-    problems.add(grid, "grid", "not a mapping",
-                 "key path: list of values, e.g. robots.count: [25, 50]");
+    add_problem(problems, grid, "grid", "not a mapping",
+                "key path: list of values, e.g. robots.count: [25, 50]");
   } else {
     for (const auto& entry : grid) {
       auto axis = entry.second.IsMap() ? read_linked_axis(entry.first, entry.second, problems)
@@ -364,7 +356,7 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
       bool valid = true;
       const std::uint64_t seed = read_seed(node, problems, "seeds", valid);
       if (valid && !seen.insert(seed).second) {
-        problems.add(node, "seeds", "repeated seed", "distinct seeds");
+        add_problem(problems, node, "seeds", "repeated seed", "distinct seeds");
       }
       spec.seeds.push_back(seed);
     }
@@ -372,12 +364,13 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
     const std::uint64_t first = read_seed(seeds["first"], problems, "seeds.first", ok);
     const std::uint64_t count = read_seed(seeds["count"], problems, "seeds.count", ok);
     if (ok && (count == 0 || count > 100000)) {
-      problems.add(seeds["count"], "seeds.count", "out of range", "1..100000");
+      add_problem(problems, seeds["count"], "seeds.count", "out of range", "1..100000");
     } else if (ok) {
       for (std::uint64_t i = 0; i < count; ++i) spec.seeds.push_back(first + i);
     }
   } else {
-    problems.add(seeds, "seeds", "not a list of seeds", "[1, 2, 3] or {first: 1, count: 10}");
+    add_problem(problems, seeds, "seeds", "not a list of seeds",
+                "[1, 2, 3] or {first: 1, count: 10}");
   }
 
   if (!problems.lines().empty()) throw SweepError(problems.lines());

@@ -155,7 +155,11 @@ IoStatus SpscRing::try_read(std::span<const std::byte>& record) {
     }
     const std::uint64_t available = cached_head_ - read_tail_;
     const std::uint64_t offset = read_tail_ & mask_;
-    if (available > capacity_) return IoStatus::corrupt;
+    // A length field always fits before the storage's end (records are padded): indices that
+    // say otherwise were written by a faulty peer (found by fuzzing).
+    if (available > capacity_ || available < kLengthBytes || offset + kLengthBytes > capacity_) {
+      return IoStatus::corrupt;
+    }
     std::uint32_t length = 0;
     std::memcpy(&length, storage_ + offset, kLengthBytes);
     if (length == kRingPaddingMarker) {

@@ -177,5 +177,20 @@ TEST(SweepResults, FlattensSummariesIntoStableColumns) {
             "count-2_seed-1,1,ok,2,1,,,,\"[1,2]\"\n");
 }
 
+// yaml-cpp 0.7 loops forever on a document that begins with ',' (found by fuzzing the scenario
+// loader): a sweep file is refused before it is parsed, with its line.
+TEST(SweepFile, ADocumentBeginningWithACommaIsRefusedNotParsed) {
+  TempDir dir;
+  const auto file = write(dir, "comma.yaml", "# a sweep\n  ,base: x.yaml\n");
+  try {
+    (void)load_sweep(file);
+    FAIL() << "accepted a sweep yaml-cpp cannot parse";
+  } catch (const SweepError& error) {
+    EXPECT_NE(std::string(error.what()).find(file.string() + ":2:3: not valid YAML"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace swarmnet

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <thread>
 #include <vector>
 
@@ -150,6 +151,21 @@ TEST(SpscRing, ReservedSpaceIsWrittenInPlaceAndShownOnlyWhenCommitted) {
   ASSERT_EQ(consumer.try_read(view), IoStatus::ok);
   EXPECT_TRUE(std::equal(view.begin(), view.end(), three.begin(), three.end()));
   EXPECT_EQ(consumer.try_read(view), IoStatus::would_block);
+}
+
+// Found by fuzzing (fuzz/corpus/fuzz_ring_framing/tail_past_the_end): a peer that wrote a tail
+// one byte short of a wrap made the consumer read a length field across the storage's end.
+TEST(SpscRing, IndicesThatPutALengthFieldPastTheEndAreCorrupt) {
+  constexpr std::uint64_t kCapacity = 4096;
+  RingMemory m(kCapacity);
+  (void)SpscRing::create(m.memory, kCapacity);
+  auto* header = static_cast<RingHeader*>(m.memory);
+  header->tail.store(std::numeric_limits<std::uint64_t>::max());  // head 0: "1 byte available"
+  SpscRing consumer;
+  std::string error;
+  ASSERT_TRUE(SpscRing::attach(m.memory, m.bytes, consumer, error)) << error;
+  std::span<const std::byte> view;
+  EXPECT_EQ(consumer.try_read(view), IoStatus::corrupt);
 }
 
 TEST(SpscRing, AViewStaysValidUntilReleased) {

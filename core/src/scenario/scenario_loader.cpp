@@ -10,6 +10,7 @@
 #include "scenario/scenario_consistency.hpp"
 #include "scenario/scenario_overrides.hpp"
 #include "scenario/scenario_schema.hpp"
+#include "scenario/yaml_hazard.hpp"
 #include "text/text_join.hpp"
 
 namespace swarmnet {
@@ -188,6 +189,13 @@ Scenario load_text(const std::string& text, const std::string& origin,
                    PluginLoader& loader) {
   ProblemList problems(origin);
   std::vector<YAML::Node> documents;
+  if (const auto hazard = find_yaml_hazard(text)) {
+    YAML::Mark mark;
+    mark.line = hazard->line;
+    mark.column = hazard->column;
+    throw ScenarioError({problems.locate(KeyPath{}, mark) +
+                         ": YAML syntax error: a document cannot begin with ','"});
+  }
   try {
     documents = YAML::LoadAll(text);
   } catch (const YAML::ParserException& error) {
