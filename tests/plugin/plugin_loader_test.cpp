@@ -75,6 +75,9 @@ class RecordingRobot final : public RobotContext {
   [[nodiscard]] Vec2 position() const override { return Vec2::Zero(); }
   [[nodiscard]] double heading_rad() const override { return 0.0; }
   [[nodiscard]] double max_speed_mps() const override { return 1.0; }
+  [[nodiscard]] double axle_m() const override { return 0.14; }
+  [[nodiscard]] const Arena& arena() const override { return arena_; }
+  [[nodiscard]] std::uint16_t port() const override { return 0; }
   [[nodiscard]] std::span<const double> proximity() const override { return {}; }
   [[nodiscard]] double proximity_range_m() const override { return 0.3; }
   [[nodiscard]] std::span<const ReceivedMessage> inbox() const override { return {}; }
@@ -87,6 +90,9 @@ class RecordingRobot final : public RobotContext {
   }
 
   std::vector<std::pair<std::string, double>> records;
+
+ private:
+  Arena arena_{10.0, 10.0, {}};
 };
 
 PluginArgs controller_args(double speed_mps) {

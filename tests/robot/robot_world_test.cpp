@@ -106,6 +106,47 @@ TEST_F(RobotWorldTest, MessageIdsAscendFromZeroAcrossSteps) {
   for (std::size_t k = 0; k < all.size(); ++k) EXPECT_EQ(all[k].message_id, k);
 }
 
+// Two cbr entries on every robot, each message delivered to its destination: how many
+// receptions the cbr entries record together after `steps` steps, and how many were sent.
+std::pair<std::uint64_t, std::uint64_t> cbr_receptions(PluginLoader& loader,
+                                                       std::vector<std::uint16_t> ports) {
+  RobotSettings settings = make_settings(loader, 6, 10.0, 10.0);
+  for (int entry = 0; entry < 2; ++entry) {
+    settings.robots.controllers.push_back(
+        make_choice(loader, "cbr", PluginKind::controller, {{"fraction", 1.0}, {"start_s", 0.0}}));
+  }
+  settings.robots.controller_ports = std::move(ports);
+  RobotWorld world(settings, loader);
+  std::vector<AppMessage> sent;
+  std::vector<Delivery> deliveries;
+  std::uint64_t total_sent = 0;
+  for (int step = 0; step < 20; ++step) {
+    std::vector<AppMessage> now;
+    world.step(deliveries, now);
+    deliveries.clear();
+    for (const AppMessage& m : now) {
+      deliveries.push_back({m.message_id, m.source, m.destination, m.destination, world.now(),
+                            world.now(), 1, m.payload});
+    }
+    total_sent += now.size();
+  }
+  world.step(deliveries, sent);
+  const auto& metrics = world.controller_metrics();
+  const auto it = metrics.find("cbr_received");
+  return {it == metrics.end() ? 0 : it->second.count, total_sent};
+}
+
+TEST_F(RobotWorldTest, EachControllerReceivesOnItsOwnPortUnlessTheyShareOne) {
+  // Default ports 0 and 1: every message reaches the one entry that sent it.
+  const auto [apart, sent_apart] = cbr_receptions(loader_, {});
+  ASSERT_GT(sent_apart, 0U);
+  EXPECT_EQ(apart, sent_apart);
+  // Both on port 7: each message is in both entries' inboxes.
+  const auto [shared, sent_shared] = cbr_receptions(loader_, {7, 7});
+  EXPECT_EQ(sent_shared, sent_apart);
+  EXPECT_EQ(shared, 2 * sent_shared);
+}
+
 TEST_F(RobotWorldTest, ControllersSeeProximityAndPlacementIsValid) {
   RobotSettings settings = make_settings(loader_, 40, 6.0, 6.0);
   RobotWorld world(settings, loader_);
@@ -139,7 +180,10 @@ class RobotContextTest : public ::testing::Test {
   RobotContextTest() {
     state_.bodies.resize(3);
     for (auto& body : state_.bodies) body.max_speed_mps = 0.5;
-    state_.inboxes.resize(3);
+    state_.arena = Arena{12.0, 8.0, {Rect{1.0, 1.0, 2.0, 2.0}}};
+    for (auto& body : state_.bodies) body.axle_m = 0.2;
+    state_.ports = {0, 4};
+    state_.inboxes.resize(3 * state_.ports.size());
     state_.rays_per_robot = 2;
     state_.proximity = {1, 2, 3, 4, 5, 6};
     state_.outbox = &outbox_;
@@ -147,6 +191,24 @@ class RobotContextTest : public ::testing::Test {
   RobotWorldState state_;
   std::vector<AppMessage> outbox_;
 };
+
+TEST_F(RobotContextTest, ControllersReadTheAxleTheArenaAndTheirPort) {
+  WorldRobotContext robot(state_, 1);
+  EXPECT_EQ(robot.axle_m(), 0.2);
+  EXPECT_EQ(robot.arena().width_m, 12.0);
+  EXPECT_EQ(robot.arena().height_m, 8.0);
+  ASSERT_EQ(robot.arena().obstacles.size(), 1U);
+  state_.current_port = 4;
+  state_.current_port_index = 1;
+  EXPECT_EQ(robot.port(), 4U);
+  state_.inboxes[1 * 2 + 1].slots.resize(1);
+  state_.inboxes[1 * 2 + 1].size = 1;
+  EXPECT_EQ(robot.inbox().size(), 1U);  // robot 1's inbox for port 4
+  std::vector<std::byte> payload(3, std::byte{1});
+  EXPECT_EQ(robot.send(kBroadcast, payload), 0U);
+  ASSERT_EQ(state_.message_ports.size(), 1U);
+  EXPECT_EQ(state_.message_ports[0], 4U);
+}
 
 TEST_F(RobotContextTest, WheelSpeedsAreClamped) {
   WorldRobotContext robot(state_, 1);

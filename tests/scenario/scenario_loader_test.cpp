@@ -136,6 +136,26 @@ TEST(ScenarioLoader, OptionalKeysTakeTheirDocumentedDefaults) {
   EXPECT_TRUE(s.output.traffic_schedule);
 }
 
+// A controller entry's port (swarmnet/controller.hpp) is its index unless the scenario gives one;
+// the resolved scenario states every port.
+TEST(ScenarioLoader, ControllerPortsDefaultToTheirIndexAndAreChecked) {
+  const Scenario s = load(kFull);
+  EXPECT_EQ(s.robots.controller_ports, (std::vector<std::uint16_t>{0, 1}));
+  EXPECT_NE(s.resolved_yaml.find("port: 1"), std::string::npos) << s.resolved_yaml;
+  const Scenario shared = load_with(kFull, {"robots.controllers.1.port=0"});
+  EXPECT_EQ(shared.robots.controller_ports, (std::vector<std::uint16_t>{0, 0}));
+  try {
+    (void)load_with(kFull, {"robots.controllers.0.port=70000"});
+    FAIL() << "port 70000 accepted";
+  } catch (const ScenarioError& error) {
+    EXPECT_NE(std::string(error.what())
+                  .find("--set robots.controllers.0.port: robots.controllers.0.port: 70000 is out "
+                        "of range; expected integer 0..65535"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 TEST(ScenarioLoader, SetOverridesNestedValuesAndListElements) {
   const Scenario s = load_with(
       kFull, {"robots.count=30", "robots.controllers.1.params.rate_hz=2",

@@ -2,6 +2,11 @@
 // step a robot's controllers run in the scenario's order.
 //
 // A controller sees only its RobotContext: its own sensors and actuators, never the world.
+//
+// Ports: every controller entry of a scenario has a port (robots.controllers[i].port, by default
+// its index i), as a UDP application has one. A controller's send() goes to that port on the
+// destination robots, and its inbox() holds only the messages sent to its port, so controllers
+// on one robot do not see each other's traffic unless the scenario gives them one port.
 #pragma once
 
 #include <cstddef>
@@ -10,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "swarmnet/arena.hpp"
 #include "swarmnet/ids.hpp"
 #include "swarmnet/plugin.hpp"
 #include "swarmnet/units.hpp"
@@ -38,15 +44,22 @@ class RobotContext {
   [[nodiscard]] virtual Vec2 position() const = 0;
   [[nodiscard]] virtual double heading_rad() const = 0;
   [[nodiscard]] virtual double max_speed_mps() const = 0;
+  // Distance between the wheels: a turn rate w needs wheel speeds v -/+ w * axle_m() / 2.
+  [[nodiscard]] virtual double axle_m() const = 0;
+  // The walled arena (size and obstacles), in metres.
+  [[nodiscard]] virtual const Arena& arena() const = 0;
   // Proximity ring: distances in metres, ray k at heading + 2*pi*k/size(); range when clear.
   [[nodiscard]] virtual std::span<const double> proximity() const = 0;
   [[nodiscard]] virtual double proximity_range_m() const = 0;
-  // Messages delivered to this robot since its previous step, in delivery order.
+  // This controller's port (see the top of this file).
+  [[nodiscard]] virtual std::uint16_t port() const = 0;
+  // Messages delivered to this robot's port() since its previous step, in delivery order.
   [[nodiscard]] virtual std::span<const ReceivedMessage> inbox() const = 0;
 
   // Actuators. Wheel speeds are clamped to +/- max_speed_mps().
   virtual void set_wheel_speeds(double left_mps, double right_mps) = 0;
-  // Sends a message to one robot, or to kBroadcast. Returns its message id. A payload larger than
+  // Sends a message to port() on one robot, or on every robot (kBroadcast). Returns its message
+  // id. A payload larger than
   // kMaxPayloadBytes is refused with std::invalid_argument; a message beyond the swarm's
   // kMaxMessagesPerRobotStep x robots in one step with std::length_error.
   virtual std::uint64_t send(RobotId destination, std::span<const std::byte> payload) = 0;

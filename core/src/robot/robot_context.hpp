@@ -14,8 +14,8 @@
 
 namespace swarmnet {
 
-// Messages delivered to one robot in the current step. Slots are reused from step to step
-// (payload buffers keep their capacity), so filling an inbox does not allocate once warmed up.
+// Messages delivered to one port of one robot in the current step. Slots are reused from step to
+// step (payload buffers keep their capacity), so filling an inbox does not allocate once warmed up.
 struct Inbox {
   std::vector<ReceivedMessage> slots;
   std::size_t size = 0;
@@ -25,11 +25,20 @@ struct Inbox {
 
 // Everything the contexts of one RobotWorld share. Owned by the world.
 struct RobotWorldState {
+  Arena arena;
   std::vector<RobotBody> bodies;
   std::size_t rays_per_robot = 0;
   double proximity_range_m = 0.0;
   std::vector<double> proximity;  // rays_per_robot readings per robot, robot after robot
+  // The ports the controller entries use, ascending; robot r's inbox for ports[k] is
+  // inboxes[r * ports.size() + k].
+  std::vector<std::uint16_t> ports;
   std::vector<Inbox> inboxes;
+  // The controller entry running now: its port, and that port's index in `ports`.
+  std::uint16_t current_port = 0;
+  std::size_t current_port_index = 0;
+  // The port every message was sent from (and so to), by message id.
+  std::vector<std::uint16_t> message_ports;
   SimTime now{};
   double step_s = 0.0;
   std::uint64_t next_message_id = 0;
@@ -49,10 +58,13 @@ class WorldRobotContext final : public RobotContext {
   [[nodiscard]] Vec2 position() const override { return body().position; }
   [[nodiscard]] double heading_rad() const override { return body().heading_rad; }
   [[nodiscard]] double max_speed_mps() const override { return body().max_speed_mps; }
+  [[nodiscard]] double axle_m() const override { return body().axle_m; }
+  [[nodiscard]] const Arena& arena() const override { return state_->arena; }
+  [[nodiscard]] std::uint16_t port() const override { return state_->current_port; }
   [[nodiscard]] std::span<const double> proximity() const override;
   [[nodiscard]] double proximity_range_m() const override { return state_->proximity_range_m; }
   [[nodiscard]] std::span<const ReceivedMessage> inbox() const override {
-    return state_->inboxes[id_].messages();
+    return state_->inboxes[id_ * state_->ports.size() + state_->current_port_index].messages();
   }
 
   // Clamps each speed to +/- max_speed_mps; a NaN speed counts as 0 (stopping is the safe

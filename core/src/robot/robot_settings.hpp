@@ -2,6 +2,7 @@
 // from a validated scenario (Scenario::robot_settings); tests build them by hand.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -24,6 +25,13 @@ struct RobotsConfig {
   Rect placement;  // region robots start in (defaults to the whole arena)
   ProximityConfig proximity;
   std::vector<PluginChoice> controllers;  // run in this order on every step
+  // controllers[c]'s port (swarmnet/controller.hpp); an entry without one here has port c.
+  std::vector<std::uint16_t> controller_ports;
+
+  [[nodiscard]] std::uint16_t port_of(std::size_t entry) const {
+    return entry < controller_ports.size() ? controller_ports[entry]
+                                           : static_cast<std::uint16_t>(entry);
+  }
 };
 
 struct RobotSettings {

@@ -1,5 +1,6 @@
 #include "robot/robot_world.hpp"
 
+#include <algorithm>
 #include <iterator>
 #include <stdexcept>
 #include <string>
@@ -34,6 +35,7 @@ RobotWorld::RobotWorld(const RobotSettings& settings, PluginLoader& loader) {
     throw std::invalid_argument("step_s must be positive, not " + std::to_string(settings.step_s));
   }
   state_.step_s = settings.step_s;
+  state_.arena = settings.arena;
   step_length_ = from_seconds(settings.step_s);
 
   RobotBody prototype;
@@ -47,7 +49,13 @@ RobotWorld::RobotWorld(const RobotSettings& settings, PluginLoader& loader) {
   state_.rays_per_robot = robots.proximity.rays;
   state_.proximity_range_m = robots.proximity.range_m;
   state_.proximity.assign(count * state_.rays_per_robot, robots.proximity.range_m);
-  state_.inboxes.resize(count);
+  for (std::size_t c = 0; c < robots.controllers.size(); ++c) {
+    entry_ports_.push_back(robots.port_of(c));
+    state_.ports.push_back(robots.port_of(c));
+  }
+  std::sort(state_.ports.begin(), state_.ports.end());
+  state_.ports.erase(std::unique(state_.ports.begin(), state_.ports.end()), state_.ports.end());
+  state_.inboxes.resize(count * std::max<std::size_t>(state_.ports.size(), 1));
 
   PluginArgs physics_args;
   physics_args.params = settings.physics.params;
@@ -78,6 +86,7 @@ RobotWorld::RobotWorld(const RobotSettings& settings, PluginLoader& loader) {
   const OutboxScope outbox(state_, sent_in_init_);
   for (std::size_t r = 0; r < count; ++r) {
     for (std::size_t c = 0; c < controllers_per_robot_; ++c) {
+      enter(c);
       controllers_[r * controllers_per_robot_ + c]->init(contexts_[r]);
     }
   }
@@ -88,11 +97,27 @@ std::span<const double> RobotWorld::proximity(RobotId robot) const {
           state_.rays_per_robot};
 }
 
+std::size_t RobotWorld::port_index(std::uint16_t port) const {
+  return static_cast<std::size_t>(std::lower_bound(state_.ports.begin(), state_.ports.end(), port) -
+                                  state_.ports.begin());
+}
+
+void RobotWorld::enter(std::size_t entry) {
+  state_.current_port = entry_ports_[entry];
+  state_.current_port_index = port_index(entry_ports_[entry]);
+}
+
 void RobotWorld::fill_inboxes(std::span<const Delivery> deliveries) {
   for (Inbox& inbox : state_.inboxes) inbox.size = 0;
+  const std::size_t ports = state_.ports.size();
   for (const Delivery& delivery : deliveries) {
-    if (delivery.receiver >= state_.inboxes.size()) continue;
-    Inbox& inbox = state_.inboxes[delivery.receiver];
+    // A message id this half never sent (only a faulty peer returns one) has no port.
+    if (delivery.receiver >= state_.bodies.size() ||
+        delivery.message_id >= state_.message_ports.size() || ports == 0) {
+      continue;
+    }
+    const std::size_t k = port_index(state_.message_ports[delivery.message_id]);
+    Inbox& inbox = state_.inboxes[delivery.receiver * ports + k];
     if (inbox.size == inbox.slots.size()) inbox.slots.emplace_back();
     ReceivedMessage& message = inbox.slots[inbox.size++];
     message.message_id = delivery.message_id;
@@ -127,6 +152,7 @@ void RobotWorld::step(std::span<const Delivery> deliveries, std::vector<AppMessa
     const OutboxScope outbox(state_, sent);
     for (std::size_t r = 0; r < contexts_.size(); ++r) {
       for (std::size_t c = 0; c < controllers_per_robot_; ++c) {
+        enter(c);
         controllers_[r * controllers_per_robot_ + c]->control_step(contexts_[r]);
       }
     }

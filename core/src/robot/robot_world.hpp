@@ -57,7 +57,12 @@ class RobotWorld {
   [[nodiscard]] const ControllerMetrics& controller_metrics() const { return state_.metrics; }
 
  private:
+  // Puts each delivery into its receiver's inbox for the port the message was sent from.
   void fill_inboxes(std::span<const Delivery> deliveries);
+  // The index of `port` in state_.ports.
+  [[nodiscard]] std::size_t port_index(std::uint16_t port) const;
+  // Makes controller entry `entry` the one the contexts speak for (its port and inbox).
+  void enter(std::size_t entry);
   void sense();
 
   RobotWorldState state_;
@@ -66,6 +71,7 @@ class RobotWorld {
   PluginInstance<Physics> physics_;
   std::size_t controllers_per_robot_ = 0;
   std::vector<PluginInstance<Controller>> controllers_;  // robot r's entry c at r * per_robot + c
+  std::vector<std::uint16_t> entry_ports_;               // controller entry c's port
   std::vector<WorldRobotContext> contexts_;
   std::vector<AppMessage> sent_in_init_;
 };

@@ -53,6 +53,11 @@ const ScalarRule& plugin_name_rule() {
   return rule;
 }
 
+const ScalarRule& port_rule() {
+  static const ScalarRule rule{ScalarType::integer, 0, 65535, false, false, {}, ""};
+  return rule;
+}
+
 bool default_has_type(const ParamSpec& spec) {
   switch (spec.type) {
     case ParamType::real:
@@ -231,7 +236,11 @@ std::optional<YAML::Node> ScenarioChecker::check_plugin(const KeySpec& spec,
                                                         const YAML::Node& value,
                                                         const Where& where) {
   const std::string kind = to_string(spec.plugin_kind);
-  const std::string form = "{plugin: NAME, params: {...}} naming a " + kind + " plugin";
+  // A controller entry also has a port (swarmnet/controller.hpp), by default its list index.
+  const bool has_port = spec.plugin_kind == PluginKind::controller;
+  const std::string form = "{plugin: NAME, params: {...}" +
+                           std::string(has_port ? ", port: 0..65535" : "") + "} naming a " + kind +
+                           " plugin";
   const bool empty = !value.IsDefined() || value.IsNull();
   if (!empty && !value.IsMap()) {
     problems_.add(where.path, where.mark, quote_value(value) + " is not a mapping", form);
@@ -242,7 +251,11 @@ std::optional<YAML::Node> ScenarioChecker::check_plugin(const KeySpec& spec,
     return std::nullopt;
   }
   const std::vector<Entry> given =
-      empty ? std::vector<Entry>{} : entries(value, where, {"plugin", "params"}, "unknown key", "");
+      empty ? std::vector<Entry>{}
+            : entries(value, where,
+                      has_port ? std::vector<std::string>{"plugin", "params", "port"}
+                               : std::vector<std::string>{"plugin", "params"},
+                      "unknown key", "");
   const auto find_entry = [&given](const char* key) -> const Entry* {
     for (const auto& entry : given) {
       if (entry.key == key) return &entry;
@@ -295,11 +308,28 @@ std::optional<YAML::Node> ScenarioChecker::check_plugin(const KeySpec& spec,
                           params_where, &params);
   if (!checked_params) return std::nullopt;
 
+  std::int64_t port = 0;
+  if (has_port) {
+    // An entry of a list: its index is the last part of its path.
+    port = std::stoll(where.path.parts().back());
+    if (const Entry* port_entry = find_entry("port")) {
+      remember(port_entry->where);
+      std::string problem;
+      const auto checked = check_scalar(port_rule(), port_entry->value, &problem);
+      if (!checked) {
+        problems_.add(where.path / "port", port_entry->where.mark, problem, port_rule().describe());
+        return std::nullopt;
+      }
+      port = std::get<std::int64_t>(*checked);
+    }
+  }
+
   plugins_[where.path.text()] =
       PluginChoice{name, spec.plugin_kind, std::move(params), SourceLocation{where_text}};
   YAML::Node out(YAML::NodeType::Map);
   out["plugin"] = name;
   out["params"] = *checked_params;
+  if (has_port) out["port"] = port;
   return out;
 }
 

@@ -108,6 +108,9 @@ Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>
   s.robots.proximity.rays = robots["proximity"]["rays"].as<std::uint32_t>();
   s.robots.proximity.range_m = robots["proximity"]["range_m"].as<double>();
   s.robots.controllers = plugin_list("robots.controllers", robots["controllers"].size());
+  for (const auto& entry : robots["controllers"]) {
+    s.robots.controller_ports.push_back(entry["port"].as<std::uint16_t>());
+  }
 
   s.physics = plugin("physics");
 

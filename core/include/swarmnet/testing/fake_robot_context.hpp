@@ -34,6 +34,9 @@ class FakeRobotContext final : public RobotContext {
   Vec2 pose_position = Vec2::Zero();
   double pose_heading_rad = 0.0;
   double max_speed = 1.0;
+  double axle = 0.14;  // a foot-bot's
+  Arena world{100.0, 100.0, {}};
+  std::uint16_t own_port = 0;
   double range_m = 1.0;
   std::vector<double> rays = std::vector<double>(24, 1.0);
   std::vector<ReceivedMessage> received;
@@ -50,6 +53,9 @@ class FakeRobotContext final : public RobotContext {
   [[nodiscard]] Vec2 position() const override { return pose_position; }
   [[nodiscard]] double heading_rad() const override { return pose_heading_rad; }
   [[nodiscard]] double max_speed_mps() const override { return max_speed; }
+  [[nodiscard]] double axle_m() const override { return axle; }
+  [[nodiscard]] const Arena& arena() const override { return world; }
+  [[nodiscard]] std::uint16_t port() const override { return own_port; }
   [[nodiscard]] std::span<const double> proximity() const override { return rays; }
   [[nodiscard]] double proximity_range_m() const override { return range_m; }
   [[nodiscard]] std::span<const ReceivedMessage> inbox() const override { return received; }
@@ -74,11 +80,11 @@ class FakeRobotContext final : public RobotContext {
 
   // Every ray clear.
   void clear_rays() { std::fill(rays.begin(), rays.end(), range_m); }
-  // One step of a differential drive with axle `axle_m` under the current wheel speeds: the
+  // One step of a differential drive with axle `axle` under the current wheel speeds: the
   // heading turns, the position moves along the mean heading, the clock advances.
-  void advance(double axle_m = 0.14) {  // 0.14 m: a foot-bot's axle
+  void advance() {
     const double v = 0.5 * (left_mps + right_mps);
-    const double turn = (right_mps - left_mps) / axle_m * step_length_s;
+    const double turn = (right_mps - left_mps) / axle * step_length_s;
     const double mid = pose_heading_rad + 0.5 * turn;
     pose_position += Vec2(std::cos(mid), std::sin(mid)) * v * step_length_s;
     pose_heading_rad = std::remainder(pose_heading_rad + turn, 2.0 * std::numbers::pi);
