@@ -37,6 +37,28 @@ done
 plugin_dir=$(dirname "$(find "$prefix" -name swarmnet_aodv.so | head -n 1)")
 [[ -f $plugin_dir/swarmnet_ideal_mac.so ]] || fail "in-tree plugins not installed"
 
+step "the package's paths point under the prefix, not under a dependency's"
+# Eigen's package file, found by find_dependency(), resets PACKAGE_PREFIX_DIR to its own prefix.
+mkdir -p "$tmp/paths"
+cat >"$tmp/paths/CMakeLists.txt" <<'CMAKE'
+cmake_minimum_required(VERSION 3.25)
+project(SwarmNetPaths LANGUAGES CXX)
+find_package(SwarmNet 0.1 REQUIRED)
+message(STATUS "SWARMNET_INCLUDE_DIR=${SWARMNET_INCLUDE_DIR}")
+message(STATUS "SWARMNET_PLUGIN_INSTALL_DIR=${SWARMNET_PLUGIN_INSTALL_DIR}")
+CMAKE
+"$cmake" -S "$tmp/paths" -B "$tmp/paths/build" -G "$generator" -DCMAKE_CXX_COMPILER="$cxx" \
+  -DCMAKE_PREFIX_PATH="$prefix" >"$tmp/paths.log" 2>&1 ||
+  { cat "$tmp/paths.log" >&2; fail "find_package(SwarmNet) in a minimal project"; }
+real_prefix=$(realpath "$prefix")
+for variable in SWARMNET_INCLUDE_DIR SWARMNET_PLUGIN_INSTALL_DIR; do
+  value=$(sed -n "s/^-- $variable=//p" "$tmp/paths.log")
+  [[ -n $value ]] || { cat "$tmp/paths.log" >&2; fail "$variable is not set"; }
+  [[ $(realpath -m "$value") == "$real_prefix"/* ]] || fail "$variable is $value, not under $prefix"
+done
+[[ $(realpath -m "$(sed -n "s/^-- SWARMNET_PLUGIN_INSTALL_DIR=//p" "$tmp/paths.log")") == \
+  "$(realpath "$plugin_dir")" ]] || fail "SWARMNET_PLUGIN_INSTALL_DIR is not where the plugins are"
+
 step "build examples/out_of_tree against the installed SDK"
 "$cmake" -S "$src/examples/out_of_tree" -B "$tmp/example" -G "$generator" \
   -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" \
