@@ -37,6 +37,30 @@ done
 plugin_dir=$(dirname "$(find "$prefix" -name swarmnet_aodv.so | head -n 1)")
 [[ -f $plugin_dir/swarmnet_ideal_mac.so ]] || fail "in-tree plugins not installed"
 
+step "the installed swarmnet knows no build or source path and finds its own plugins"
+# No path of the build or source tree in the command's constant data (debug info may name the
+# sources; .rodata holds what the program itself can read).
+objcopy -O binary --only-section=.rodata "$prefix/bin/swarmnet" "$tmp/rodata" ||
+  fail "objcopy .rodata of the installed swarmnet"
+for path in "$build" "$src"; do
+  grep -aqF "$path" "$tmp/rodata" && fail "the installed swarmnet holds the path $path"
+done
+# A copy of the prefix elsewhere (an installation moved) lists its own plugins and searches
+# nothing of the build tree.
+cp -a "$prefix" "$tmp/moved"
+env -u SWARMNET_PLUGIN_PATH "$tmp/moved/bin/swarmnet" plugins >"$tmp/own_plugins.txt" 2>&1 ||
+  { cat "$tmp/own_plugins.txt" >&2; fail "swarmnet plugins (installed, moved)"; }
+grep -q "$tmp/moved/.*swarmnet_aodv.so" "$tmp/own_plugins.txt" ||
+  { cat "$tmp/own_plugins.txt" >&2; fail "the moved installation does not list its own aodv"; }
+grep -qF "$build" "$tmp/own_plugins.txt" &&
+  { cat "$tmp/own_plugins.txt" >&2; fail "the installed swarmnet searches the build tree"; }
+# Its default scenario is the prefix's share/swarmnet/configs/quickstart.yaml.
+env -u SWARMNET_PLUGIN_PATH "$tmp/moved/bin/swarmnet" run -q --set duration_s=1 \
+  --out "$tmp/default_run" >"$tmp/default_run.out" 2>&1 ||
+  { cat "$tmp/default_run.out" >&2; fail "swarmnet run (installed, default scenario)"; }
+[[ -f $tmp/default_run/summary.json ]] || fail "the default scenario wrote no summary.json"
+rm -rf "$tmp/moved"
+
 step "the package's paths point under the prefix, not under a dependency's"
 # Eigen's package file, found by find_dependency(), resets PACKAGE_PREFIX_DIR to its own prefix.
 mkdir -p "$tmp/paths"

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <system_error>
 
+#include "plugin/executable_layout.hpp"
+
 namespace swarmnet {
 
 namespace {
@@ -35,19 +37,10 @@ PluginLoader::PluginLoader(std::vector<std::filesystem::path> scenario_dirs)
   for (auto& dir : split_path_list(std::getenv("SWARMNET_PLUGIN_PATH"))) {
     search_path_.push_back(std::move(dir));
   }
-  search_path_.emplace_back(SWARMNET_BUILD_PLUGIN_DIR);
-  // The install prefix, found from the running command (bin/swarmnet -> lib/swarmnet/plugins),
-  // so an installation moved or installed with --prefix finds its own plugins; then the prefix
-  // configured at build time.
-  std::error_code ec;
-  const auto executable = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec && executable.parent_path().filename() == "bin") {
-    auto relative =
-        executable.parent_path().parent_path() / SWARMNET_INSTALL_LIBDIR / "swarmnet" / "plugins";
-    if (relative != std::filesystem::path(SWARMNET_INSTALL_PLUGIN_DIR))
-      search_path_.push_back(relative);
-  }
-  search_path_.emplace_back(SWARMNET_INSTALL_PLUGIN_DIR);
+  // The plugins beside the command (<prefix>/lib/swarmnet/plugins installed, <build>/plugins in
+  // a build tree), found from its executable: no build or install path is compiled in.
+  const auto own = executable_layout().plugin_dir;
+  if (!own.empty()) search_path_.push_back(own);
 }
 
 void PluginLoader::prepend_directories(std::vector<std::filesystem::path> dirs) {
