@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <iterator>
 #include <set>
 #include <sstream>
 #include <system_error>
@@ -61,8 +62,8 @@ std::shared_ptr<PluginLibrary> PluginLoader::find(const std::string& name) {
   if (auto it = cache_.find(name); it != cache_.end()) return it->second;
   const std::string file = plugin_file_name(name);
   std::ostringstream tried;
-  for (const auto& dir : search_path_) {
-    const auto candidate = dir / file;
+  for (auto dir = search_path_.begin(); dir != search_path_.end(); ++dir) {
+    const auto candidate = *dir / file;
     std::error_code ec;
     if (!std::filesystem::exists(candidate, ec)) {
       tried << "\n  " << candidate.string() << ": no such file";
@@ -79,7 +80,18 @@ std::shared_ptr<PluginLibrary> PluginLoader::find(const std::string& name) {
       return library;
     } catch (const PluginError& error) {
       // A broken candidate is reported, not skipped silently: finding a later one would hide it.
-      throw PluginError("plugin '" + name + "': " + error.what());
+      // But a later file of the same name may be the one meant, hidden by this one: say so.
+      std::string hidden;
+      for (auto later = std::next(dir); later != search_path_.end(); ++later) {
+        if (std::filesystem::exists(*later / file, ec)) hidden += "\n  " + (*later / file).string();
+      }
+      if (!hidden.empty()) {
+        hidden =
+            "\nThe first file found wins, and it hides another of the same name later on the "
+            "search path:" +
+            hidden + "\n(remove or rebuild the broken one, or reorder the search path)";
+      }
+      throw PluginError("plugin '" + name + "': " + error.what() + hidden);
     }
   }
   throw PluginError(
