@@ -159,8 +159,13 @@ int plugins_command(const std::string& name) {
 
 static int run_main(int argc, char** argv) {
   CLI::App app{"SwarmNet: networked robot swarms, robot and network co-simulation"};
+  // Named here, not from argv[0]: `help` prints before parsing, and a path would be noise.
+  app.name("swarmnet");
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("swarmnet ") + SWARMNET_VERSION);
+  // The plugin ABI too: a plugin built against another SDK is refused, and this says which.
+  app.set_version_flag("--version", std::string("swarmnet ") + SWARMNET_VERSION +
+                                        " (plugin ABI version " +
+                                        std::to_string(swarmnet::kAbiVersion) + ")");
 
   ScenarioArguments run_args;
   bool quiet = false;
