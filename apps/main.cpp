@@ -1,4 +1,4 @@
-// The swarmnet command: run, validate, plugins, sweep, stats, replay, bench.
+// The swarmnet command: run, validate, plugins, sweep, stats, plot, replay, bench.
 #include <CLI/CLI.hpp>
 #include <charconv>
 #include <chrono>
@@ -18,6 +18,7 @@
 #include "default_scenario.hpp"
 #include "display/summary_printout.hpp"
 #include "outputs/run_directory.hpp"
+#include "plot_command.hpp"
 #include "plugin/plugin_catalog.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "replay_command.hpp"
@@ -303,6 +304,13 @@ static int run_main(int argc, char** argv) {
   clean->add_option("run_dir", clean_dirs, "run directory")
       ->required()
       ->check(CLI::ExistingDirectory);
+
+  // Listed for help; its arguments go to the script untouched (plot.py has its own --help).
+  app.add_subcommand("plot",
+                     "draw a figure from a results.csv: mean and 95% CI over seeds per group "
+                     "(runs scripts/plot.py with a python3 that has matplotlib; plot --help)");
+  if (argc >= 2 && std::string(argv[1]) == "plot")
+    return swarmnet::plot_command(std::vector<std::string>(argv + 2, argv + argc));
 
   if (argc == 2 && std::string(argv[1]) == "help") {
     std::cout << app.help();

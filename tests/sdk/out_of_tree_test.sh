@@ -36,6 +36,7 @@ done
 [[ -x $prefix/bin/swarmnet ]] || fail "swarmnet not installed"
 plugin_dir=$(dirname "$(find "$prefix" -name swarmnet_aodv.so | head -n 1)")
 [[ -f $plugin_dir/swarmnet_ideal_mac.so ]] || fail "in-tree plugins not installed"
+[[ -f $prefix/share/swarmnet/scripts/plot.py ]] || fail "the figure script (swarmnet plot) is not installed"
 
 step "the installed swarmnet knows no build or source path and finds its own plugins"
 # No path of the build or source tree in the command's constant data (debug info may name the
