@@ -256,7 +256,7 @@ static int run_main(int argc, char** argv) {
   std::string stats_file;
   std::string stats_by;
   auto* stats = app.add_subcommand(
-      "stats", "per-group mean, sd, 95% confidence interval and Welch's t-test of a results.csv");
+      "stats", "per-group mean, sd, 95% confidence interval and Welch's t-tests of a results.csv");
   stats->add_option("file", stats_file, "results.csv of a sweep")
       ->required()
       ->check(CLI::ExistingFile);
@@ -264,8 +264,17 @@ static int run_main(int argc, char** argv) {
   stats->add_option("--metric", stats_options.metrics, "numeric column to summarise (repeatable)")
       ->required();
   stats->add_option("--baseline", stats_options.baseline,
-                    "compare every group against this one (its --by values, comma-separated) "
-                    "instead of all pairs");
+                    "compare every group against this one (its labels as printed, "
+                    "comma-separated; with --within, one value of that column) instead of all "
+                    "pairs");
+  stats->add_option("--within", stats_options.within,
+                    "compare only groups that differ in this --by column alone (one factor at "
+                    "a time, the others held equal)");
+  stats->add_flag("--holm", stats_options.holm,
+                  "add p-values corrected for the number of comparisons (Holm's step-down)");
+  stats->add_flag("--bounded", stats_options.bounded,
+                  "every metric is a ratio in [0, 1]: intervals stay inside it (Wilson with an "
+                  "effective n; automatic for pdr and *_ratio)");
   stats->add_flag("--json", stats_options.json, "machine-readable output");
 
   swarmnet::ReplayCommandOptions replay_options;
