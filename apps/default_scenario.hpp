@@ -1,15 +1,21 @@
-// Where `swarmnet run` finds configs/quickstart.yaml when no file is given: the source tree this
-// binary was built from, else the install prefix's share directory.
+// Where `swarmnet run` finds configs/quickstart.yaml when no file is given: the data directory
+// beside the command (<prefix>/share/swarmnet installed, <build>/share/swarmnet in a build tree,
+// which links to the sources' configs/).
 #pragma once
 
 #include <filesystem>
+#include <system_error>
+
+#include "plugin/executable_layout.hpp"
 
 namespace swarmnet {
 
 inline std::filesystem::path default_scenario_path() {
-  std::filesystem::path in_source = SWARMNET_SOURCE_DIR "/configs/quickstart.yaml";
-  if (std::filesystem::exists(in_source)) return in_source;
-  return SWARMNET_INSTALL_DATA_DIR "/configs/quickstart.yaml";
+  const auto path = executable_layout().data_dir / "configs" / "quickstart.yaml";
+  // Through the build tree's link to the real file, so that messages name the source file.
+  std::error_code ec;
+  const auto real = std::filesystem::canonical(path, ec);
+  return ec ? path : real;
 }
 
 }  // namespace swarmnet

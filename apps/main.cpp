@@ -1,4 +1,4 @@
-// The swarmnet command: run, validate, plugins, sweep, stats, replay, bench.
+// The swarmnet command: run, validate, plugins, sweep, stats, plot, replay, bench.
 #include <CLI/CLI.hpp>
 #include <charconv>
 #include <chrono>
@@ -18,6 +18,7 @@
 #include "default_scenario.hpp"
 #include "display/summary_printout.hpp"
 #include "outputs/run_directory.hpp"
+#include "plot_command.hpp"
 #include "plugin/plugin_catalog.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "replay_command.hpp"
@@ -161,8 +162,13 @@ int plugins_command(const std::string& name) {
 
 static int run_main(int argc, char** argv) {
   CLI::App app{"SwarmNet: networked robot swarms, robot and network co-simulation"};
+  // Named here, not from argv[0]: `help` prints before parsing, and a path would be noise.
+  app.name("swarmnet");
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("swarmnet ") + SWARMNET_VERSION);
+  // The plugin ABI too: a plugin built against another SDK is refused, and this says which.
+  app.set_version_flag("--version", std::string("swarmnet ") + SWARMNET_VERSION +
+                                        " (plugin ABI version " +
+                                        std::to_string(swarmnet::kAbiVersion) + ")");
 
   ScenarioArguments run_args;
   bool quiet = false;
@@ -252,7 +258,7 @@ static int run_main(int argc, char** argv) {
   std::string stats_file;
   std::string stats_by;
   auto* stats = app.add_subcommand(
-      "stats", "per-group mean, sd, 95% confidence interval and Welch's t-test of a results.csv");
+      "stats", "per-group mean, sd, 95% confidence interval and Welch's t-tests of a results.csv");
   stats->add_option("file", stats_file, "results.csv of a sweep")
       ->required()
       ->check(CLI::ExistingFile);
@@ -260,8 +266,17 @@ static int run_main(int argc, char** argv) {
   stats->add_option("--metric", stats_options.metrics, "numeric column to summarise (repeatable)")
       ->required();
   stats->add_option("--baseline", stats_options.baseline,
-                    "compare every group against this one (its --by values, comma-separated) "
-                    "instead of all pairs");
+                    "compare every group against this one (its labels as printed, "
+                    "comma-separated; with --within, one value of that column) instead of all "
+                    "pairs");
+  stats->add_option("--within", stats_options.within,
+                    "compare only groups that differ in this --by column alone (one factor at "
+                    "a time, the others held equal)");
+  stats->add_flag("--holm", stats_options.holm,
+                  "add p-values corrected for the number of comparisons (Holm's step-down)");
+  stats->add_flag("--bounded", stats_options.bounded,
+                  "every metric is a ratio in [0, 1]: intervals stay inside it (Wilson with an "
+                  "effective n; automatic for pdr and *_ratio)");
   stats->add_flag("--json", stats_options.json, "machine-readable output");
 
   swarmnet::ReplayCommandOptions replay_options;
@@ -300,6 +315,13 @@ static int run_main(int argc, char** argv) {
   clean->add_option("run_dir", clean_dirs, "run directory")
       ->required()
       ->check(CLI::ExistingDirectory);
+
+  // Listed for help; its arguments go to the script untouched (plot.py has its own --help).
+  app.add_subcommand("plot",
+                     "draw a figure from a results.csv: mean and 95% CI over seeds per group "
+                     "(runs scripts/plot.py with a python3 that has matplotlib; plot --help)");
+  if (argc >= 2 && std::string(argv[1]) == "plot")
+    return swarmnet::plot_command(std::vector<std::string>(argv + 2, argv + argc));
 
   if (argc == 2 && std::string(argv[1]) == "help") {
     std::cout << app.help();

@@ -48,7 +48,7 @@ int replay_command(const ReplayCommandOptions& options) {
   if (!options.quiet) {
     std::printf(
         "replayed the network half of '%s' (seed %s, %s robots, %s steps): %.3f CPU-s, "
-        "%.1fx real time, delivery ratio %.1f%%\n",
+        "%.1fx real time, unicast delivery ratio %.1f%%\n",
         s["scenario"].get<std::string>().c_str(), s["seed"].dump().c_str(),
         s["robots"].dump().c_str(), s["steps"].dump().c_str(), s["cpu_s"]["network"].get<double>(),
         s["realtime_factor"].get<double>(), 100.0 * s["pdr"].get<double>());

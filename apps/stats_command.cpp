@@ -1,5 +1,6 @@
 #include "stats_command.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -7,8 +8,13 @@
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
 #include <sstream>
 
+#include "group_labels.hpp"
+#include "stats/holm_correction.hpp"
+#include "stats/proportion_interval.hpp"
 #include "stats/sample_statistics.hpp"
 #include "text/text_join.hpp"
 
@@ -44,6 +50,11 @@ void print_table(std::ostream& out, const std::vector<std::vector<std::string>>&
     }
     out << line << '\n';
   }
+}
+
+// Metrics that are ratios in [0, 1] by definition: their intervals are kept inside it.
+bool is_proportion_metric(const std::string& metric) {
+  return metric == "pdr" || metric.ends_with("_ratio") || metric.ends_with(".ratio");
 }
 
 struct Group {
@@ -153,52 +164,109 @@ int stats_command(const StatsOptions& options, std::ostream& out) {
     }
   }
 
-  std::optional<std::size_t> baseline;
-  if (!options.baseline.empty()) {
-    for (std::size_t g = 0; g < groups.size(); ++g) {
-      if (join(groups[g].key, ",") == options.baseline) baseline = g;
+  // Short names per --by column (group_labels.hpp): a group's label joins its columns' names.
+  std::vector<std::vector<std::string>> names(groups.size(), std::vector<std::string>(by.size()));
+  for (std::size_t c = 0; c < by.size(); ++c) {
+    std::vector<std::string> column_values;
+    for (const auto& g : groups) column_values.push_back(g.key[c]);
+    const auto labels = short_labels(column_values);
+    for (std::size_t g = 0; g < groups.size(); ++g) names[g][c] = labels[g];
+  }
+  auto label = [&](std::size_t g) { return by.empty() ? std::string("all") : join(names[g], ","); };
+
+  std::optional<std::size_t> within;
+  if (!options.within.empty()) {
+    for (std::size_t c = 0; c < options.by.size(); ++c) {
+      if (options.by[c] == options.within) within = c;
     }
-    if (!baseline) {
-      std::string known;
-      for (const auto& g : groups) known += (known.empty() ? "" : "; ") + join(g.key, ",");
-      return fail("--baseline " + options.baseline + ": no such group; groups are: " + known);
+    if (!within) {
+      return fail("--within " + options.within + ": not one of the --by columns (" +
+                  join(options.by, ", ") + ")");
     }
   }
+  // The groups --baseline names: one group, or with --within a value of that column (a group
+  // in each stratum). Short names and full texts both match.
+  std::vector<bool> is_baseline(groups.size(), false);
+  if (!options.baseline.empty()) {
+    std::set<std::string> known;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      const bool match =
+          within
+              ? names[g][*within] == options.baseline || groups[g].key[*within] == options.baseline
+              : label(g) == options.baseline || join(groups[g].key, ",") == options.baseline;
+      is_baseline[g] = match;
+      known.insert(within ? names[g][*within] : label(g));
+    }
+    if (std::find(is_baseline.begin(), is_baseline.end(), true) == is_baseline.end()) {
+      return fail("--baseline " + options.baseline + ": no such " +
+                  (within ? "value of " + options.within : std::string("group")) + "; there are: " +
+                  join(std::vector<std::string>(known.begin(), known.end()), "; "));
+    }
+  }
+  // Which pairs are compared: all, or against the baseline; with --within only groups that
+  // agree on every other --by column, so that each comparison changes one factor.
+  auto same_stratum = [&](std::size_t a, std::size_t b) {
+    if (!within) return true;
+    for (std::size_t c = 0; c < by.size(); ++c) {
+      if (c != *within && groups[a].key[c] != groups[b].key[c]) return false;
+    }
+    return true;
+  };
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (std::size_t a = 0; a < groups.size(); ++a) {
     for (std::size_t b = a + 1; b < groups.size(); ++b) {
-      if (!baseline) {
+      if (!same_stratum(a, b)) continue;
+      if (options.baseline.empty()) {
         pairs.emplace_back(a, b);
-      } else if (a == *baseline || b == *baseline) {
-        pairs.emplace_back(*baseline, a == *baseline ? b : a);
+      } else if (is_baseline[a] != is_baseline[b]) {
+        pairs.emplace_back(is_baseline[a] ? a : b, is_baseline[a] ? b : a);
       }
     }
   }
-  auto label = [&](const Group& g) { return by.empty() ? std::string("all") : join(g.key, ","); };
   const std::string ci_name = number(100.0 * options.confidence) + "%";
 
   nlohmann::ordered_json json = nlohmann::ordered_json::object();
   json["file"] = options.file.string();
   json["by"] = options.by;
   json["confidence"] = options.confidence;
+  if (!options.within.empty()) json["within"] = options.within;
+  if (!options.baseline.empty()) json["baseline"] = options.baseline;
+  json["holm"] = options.holm;
   json["metrics"] = nlohmann::ordered_json::object();
   for (const auto& metric : options.metrics) {
+    const bool bounded = options.bounded || is_proportion_metric(metric);
+    if (bounded) {
+      for (const auto& group : groups) {
+        for (const double v : group.values.at(metric)) {
+          if (v < 0.0 || v > 1.0) {
+            return fail(options.file.string() + ": column '" + metric + "' has " + number(v) +
+                        ", outside [0, 1]: its interval cannot be bounded (" +
+                        (options.bounded ? "drop --bounded" : "a ratio should not") + ")");
+          }
+        }
+      }
+    }
+    const std::string interval = bounded ? " (Wilson)" : "";
     std::vector<std::vector<std::string>> table;
     std::vector<std::string> head = options.by;
     if (head.empty()) head.emplace_back("group");
-    head.insert(head.end(), {"n", "mean", "sd", ci_name + " CI low", ci_name + " CI high"});
+    head.insert(head.end(), {"n", "mean", "sd", ci_name + " CI low" + interval,
+                             ci_name + " CI high" + interval});
     table.push_back(head);
     nlohmann::ordered_json jgroups = nlohmann::ordered_json::array();
-    for (const auto& group : groups) {
-      const auto& values = group.values.at(metric);
-      const stats::SampleSummary s = stats::summarize(values, options.confidence);
-      std::vector<std::string> line = by.empty() ? std::vector<std::string>{"all"} : group.key;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      const auto& values = groups[g].values.at(metric);
+      const stats::SampleSummary s = bounded
+                                         ? stats::summarize_proportions(values, options.confidence)
+                                         : stats::summarize(values, options.confidence);
+      std::vector<std::string> line = by.empty() ? std::vector<std::string>{"all"} : names[g];
       line.insert(line.end(), {std::to_string(s.n), number(s.mean), number(s.sd), number(s.ci_low),
                                number(s.ci_high)});
       table.push_back(line);
       nlohmann::ordered_json jg;
       jg["group"] = nlohmann::ordered_json::object();
-      for (std::size_t i = 0; i < by.size(); ++i) jg["group"][options.by[i]] = group.key[i];
+      for (std::size_t i = 0; i < by.size(); ++i) jg["group"][options.by[i]] = groups[g].key[i];
+      jg["label"] = label(g);
       jg["n"] = s.n;
       jg["mean"] = json_number(s.mean);
       jg["sd"] = json_number(s.sd);
@@ -206,25 +274,44 @@ int stats_command(const StatsOptions& options, std::ostream& out) {
       jg["ci_high"] = json_number(s.ci_high);
       jgroups.push_back(jg);
     }
-    std::vector<std::vector<std::string>> tests = {{"group A", "group B", "t", "df", "p"}};
-    nlohmann::ordered_json jtests = nlohmann::ordered_json::array();
+    std::vector<stats::WelchTest> welch;
+    std::vector<double> p;
     for (const auto& [a, b] : pairs) {
-      const stats::WelchTest w =
-          stats::welch_test(groups[a].values.at(metric), groups[b].values.at(metric));
-      tests.push_back(
-          {label(groups[a]), label(groups[b]), number(w.t, 4), number(w.df, 4), number(w.p, 4)});
-      jtests.push_back({{"a", label(groups[a])},
-                        {"b", label(groups[b])},
-                        {"t", json_number(w.t)},
-                        {"df", json_number(w.df)},
-                        {"p", json_number(w.p)}});
+      welch.push_back(stats::welch_test(groups[a].values.at(metric), groups[b].values.at(metric)));
+      p.push_back(welch.back().p);
     }
-    json["metrics"][metric] = {{"groups", jgroups}, {"welch", jtests}};
+    const std::vector<double> p_holm = stats::holm_adjust(p);
+    std::vector<std::string> test_head = {"group A", "group B", "t", "df", "p"};
+    if (options.holm) test_head.emplace_back("p (Holm)");
+    std::vector<std::vector<std::string>> tests = {test_head};
+    nlohmann::ordered_json jtests = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      const auto [a, b] = pairs[i];
+      const stats::WelchTest& w = welch[i];
+      tests.push_back({label(a), label(b), number(w.t, 4), number(w.df, 4), number(w.p, 4)});
+      if (options.holm) tests.back().push_back(number(p_holm[i], 4));
+      nlohmann::ordered_json jt = {{"a", label(a)},
+                                   {"b", label(b)},
+                                   {"t", json_number(w.t)},
+                                   {"df", json_number(w.df)},
+                                   {"p", json_number(w.p)}};
+      if (options.holm) jt["p_holm"] = json_number(p_holm[i]);
+      jtests.push_back(jt);
+    }
+    json["metrics"][metric] = {{"interval", bounded ? "wilson_effective_n" : "student_t"},
+                               {"groups", jgroups},
+                               {"welch", jtests}};
     if (!options.json) {
       out << metric << '\n';
       print_table(out, table);
       if (!pairs.empty()) {
-        out << "\nWelch's t-test of " << metric << " (two-sided)\n";
+        out << "\nWelch's t-test of " << metric << " (two-sided), " << pairs.size()
+            << (pairs.size() == 1 ? " comparison" : " comparisons")
+            << (options.holm       ? "; p (Holm): corrected for all of them"
+                : pairs.size() > 1 ? "; p not corrected for multiple comparisons "
+                                     "(--holm corrects)"
+                                   : "")
+            << '\n';
         print_table(out, tests);
       }
       out << '\n';

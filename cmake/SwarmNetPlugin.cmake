@@ -27,7 +27,12 @@ function(swarmnet_add_plugin name)
     LIBRARY_OUTPUT_DIRECTORY ${SWARMNET_BUILD_PLUGIN_DIR}
     CXX_VISIBILITY_PRESET hidden
     VISIBILITY_INLINES_HIDDEN ON)
-  target_link_options(${target} PRIVATE -Wl,--no-undefined)
+  # --no-undefined: a missing symbol fails here, not when a run loads the plugin.
+  # --require-defined: a library without SWARMNET_PLUGIN(...) is no plugin; the loader would
+  # refuse it at run time, so refuse it at link time: "required symbol `swarmnet_plugin_entry'
+  # not defined" means the plugin's source lacks SWARMNET_PLUGIN(TheClass) (docs/plugins.md).
+  target_link_options(${target} PRIVATE -Wl,--no-undefined
+    -Wl,--require-defined=swarmnet_plugin_entry)
   if(TARGET swarmnet_plugins)
     add_dependencies(swarmnet_plugins ${target})
   endif()

@@ -2,10 +2,11 @@
 """Plot a SwarmNet sweep's results.csv: one line per group, the mean of a metric over seeds with
 95% confidence intervals (Student t) as error bars.
 
-    python3 scripts/plot.py runs/sweeps/NAME/results.csv --x robots.count --y pdr \
+    swarmnet plot runs/sweeps/NAME/results.csv --x robots.count --y pdr \
         --by network.routing --out fig.png
 
-Needs python3 and matplotlib (Debian: python3-matplotlib; ./swarmnet installs it). Rows whose
+`swarmnet plot` runs this script with a python3 that has matplotlib (Debian's python3 and
+python3-matplotlib, which ./swarmnet installs, first). Rows whose
 status is not "ok" or whose --y cell is empty are left out. See docs/experiments.md.
 """
 import argparse

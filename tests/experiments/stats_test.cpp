@@ -1,10 +1,13 @@
-// Student's t distribution and Welch's test against published values.
+// Student's t distribution and Welch's test against published values; Holm's correction and the
+// interval for ratios in [0, 1].
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <sstream>
 #include <vector>
 
+#include "stats/holm_correction.hpp"
+#include "stats/proportion_interval.hpp"
 #include "stats/sample_statistics.hpp"
 #include "stats/student_t.hpp"
 #include "stats_command.hpp"
@@ -94,6 +97,54 @@ TEST(StatsCommand, ReadsQuotedCsv) {
   EXPECT_EQ(rows[1][1], "say \"hi\"");
   ASSERT_EQ(rows[2].size(), 2U);
   EXPECT_EQ(rows[2][1], "");
+}
+
+}  // namespace
+}  // namespace swarmnet::stats
+
+namespace swarmnet::stats {
+namespace {
+
+TEST(HolmCorrection, StepsDownAndKeepsTheOrderGiven) {
+  // Sorted: 0.005 x4 = 0.02, 0.01 x3 = 0.03, 0.03 x2 = 0.06, 0.04 x1 = 0.04 -> max so far 0.06.
+  const auto adjusted = holm_adjust({0.01, 0.04, 0.03, 0.005});
+  ASSERT_EQ(adjusted.size(), 4U);
+  EXPECT_DOUBLE_EQ(adjusted[0], 0.03);
+  EXPECT_DOUBLE_EQ(adjusted[1], 0.06);
+  EXPECT_DOUBLE_EQ(adjusted[2], 0.06);
+  EXPECT_DOUBLE_EQ(adjusted[3], 0.02);
+  // A test that could not be computed stays undefined and does not count in m; 1 caps.
+  const auto with_nan = holm_adjust({0.5, std::nan(""), 0.2});
+  EXPECT_DOUBLE_EQ(with_nan[0], 0.5);
+  EXPECT_TRUE(std::isnan(with_nan[1]));
+  EXPECT_DOUBLE_EQ(with_nan[2], 0.4);
+  EXPECT_DOUBLE_EQ(holm_adjust({0.6, 0.7})[0], 1.0);
+}
+
+TEST(ProportionInterval, StaysInsideZeroToOneWhereTheTIntervalDoesNot) {
+  const std::vector<double> near_one{0.98, 0.99, 1.0};
+  EXPECT_GT(summarize(near_one).ci_high, 1.0) << "the defect: a ratio's t interval above 1";
+  const SampleSummary s = summarize_proportions(near_one);
+  EXPECT_DOUBLE_EQ(s.mean, 0.99);
+  EXPECT_LE(s.ci_high, 1.0);
+  EXPECT_GE(s.ci_low, 0.0);
+  EXPECT_LT(s.ci_low, s.mean);
+  EXPECT_GT(s.ci_high, s.mean);
+  const SampleSummary low = summarize_proportions(std::vector<double>{0.0, 0.01, 0.03});
+  EXPECT_GE(low.ci_low, 0.0);
+  // All equal: no spread, the interval is the point, as the t interval.
+  const SampleSummary flat = summarize_proportions(std::vector<double>{1.0, 1.0, 1.0});
+  EXPECT_DOUBLE_EQ(flat.ci_low, 1.0);
+  EXPECT_DOUBLE_EQ(flat.ci_high, 1.0);
+}
+
+TEST(ProportionInterval, AgreesWithTheTIntervalAwayFromTheBounds) {
+  std::vector<double> middle;
+  for (int i = 0; i < 50; ++i) middle.push_back(0.45 + 0.002 * (i % 10));
+  const SampleSummary t = summarize(middle);
+  const SampleSummary w = summarize_proportions(middle);
+  EXPECT_NEAR(w.ci_low, t.ci_low, 1e-4);
+  EXPECT_NEAR(w.ci_high, t.ci_high, 1e-4);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "command_runner.hpp"
+#include "swarmnet/plugin.hpp"
 
 namespace swarmnet::testing {
 namespace {
@@ -20,6 +21,27 @@ TEST(CommandLine, DefaultRunPrintsItsSummary) {
                                                            << result.output;
   }
   EXPECT_TRUE(std::filesystem::exists(dir.path() / "summary.json"));
+}
+
+TEST(CommandLine, HelpNamesTheCommand) {
+  for (const char* arguments : {"help", "--help"}) {
+    const auto result = run_swarmnet(arguments);
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("Usage: swarmnet [OPTIONS] SUBCOMMAND"), std::string::npos)
+        << arguments << ":\n"
+        << result.output;
+  }
+  const auto run_help = run_swarmnet("run --help");
+  EXPECT_NE(run_help.output.find("Usage: swarmnet run"), std::string::npos) << run_help.output;
+}
+
+TEST(CommandLine, VersionShowsThePluginAbi) {
+  const auto result = run_swarmnet("--version");
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("swarmnet " SWARMNET_TEST_VERSION " (plugin ABI version " +
+                               std::to_string(kAbiVersion) + ")"),
+            std::string::npos)
+      << result.output;
 }
 
 TEST(CommandLine, MissingScenarioFileIsRefused) {

@@ -128,7 +128,7 @@ TEST(PluginLoader, MissingPluginNamesThePluginAndEveryDirectorySearched) {
   PluginLoader loader({"/nonexistent/first", kFixtures});
   const std::string message = plugin_error([&] { loader.find("no_such_plugin"); });
   EXPECT_TRUE(Contains(message, "plugin 'no_such_plugin' not found"));
-  ASSERT_GE(loader.search_path().size(), 4u);  // the two above, build tree, install prefix
+  ASSERT_GE(loader.search_path().size(), 3u);  // the two above, the command's own plugins
   for (const auto& dir : loader.search_path()) {
     EXPECT_TRUE(
         Contains(message, (dir / "swarmnet_no_such_plugin.so").string() + ": no such file"));
@@ -181,6 +181,47 @@ TEST(PluginLoader, FileThatIsNotAnElfIsRefusedWithDlerrorText) {
   EXPECT_TRUE(Contains(
       message, "cannot open plugin library " + (kFixtures / "swarmnet_test_not_elf.so").string()));
   EXPECT_TRUE(Contains(message, "invalid ELF header"));
+}
+
+// A plugin's own table is checked at load; the error names the plugin, its file, the parameter.
+TEST(PluginLoader, TableWithAFaultIsRefusedNamingPluginFileAndParameter) {
+  struct Case {
+    const char* plugin;
+    const char* parameter;
+    const char* fault;
+  };
+  for (const Case& c : {
+           Case{"test_bad_default", "ttl", "its default 300 is outside its range [1, 255]"},
+           Case{"test_twice_declared", "n", "is declared twice"},
+           Case{"test_bad_param_name", "jitterMax", "its name is not lower_snake_case"},
+           Case{"test_bad_default_type", "window",
+                "it is declared integer but its default is real"},
+       }) {
+    PluginLoader loader({kFixtures});
+    const std::string message = plugin_error([&] { loader.find(c.plugin); });
+    const std::string file = (kFixtures / ("swarmnet_" + std::string(c.plugin) + ".so")).string();
+    EXPECT_TRUE(Contains(message, "plugin '" + std::string(c.plugin) + "' (" + file + ")"));
+    EXPECT_TRUE(Contains(message, "parameter '" + std::string(c.parameter) + "'"));
+    EXPECT_TRUE(Contains(message, c.fault));
+  }
+}
+
+// A broken file first on the path hides a good one of the same name later: the error says so.
+TEST(PluginLoader, BrokenCandidateNamesTheLaterFileItHides) {
+  const fs::path root = fs::temp_directory_path() / ("swarmnet-hidden-" + std::to_string(getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root / "broken");
+  fs::copy_file(kFixtures / "swarmnet_test_not_elf.so",
+                root / "broken" / "swarmnet_test_routing.so");
+  PluginLoader loader({root / "broken", kFixtures});
+  const std::string message = plugin_error([&] { loader.find("test_routing"); });
+  EXPECT_TRUE(Contains(message, (root / "broken" / "swarmnet_test_routing.so").string()));
+  EXPECT_TRUE(Contains(message, "hides another of the same name later on the search path:\n  " +
+                                    (kFixtures / "swarmnet_test_routing.so").string()));
+
+  PluginLoader alone({kFixtures});  // the broken file alone: nothing hidden to mention
+  EXPECT_FALSE(Contains(plugin_error([&] { alone.find("test_not_elf"); }), "hides another"));
+  fs::remove_all(root);
 }
 
 TEST(PluginLoader, CreatedObjectGetsItsParameters) {
@@ -250,9 +291,12 @@ TEST(PluginLoader, DiscoverListsPluginsByKindThenNameAndReportsBrokenFiles) {
     broken_files.push_back(file.path.filename().string());
     EXPECT_TRUE(Contains(file.error, file.path.string()));
   }
-  EXPECT_EQ(broken_files, (std::vector<std::string>{
-                              "swarmnet_test_abi_mismatch.so", "swarmnet_test_no_entry.so",
-                              "swarmnet_test_not_elf.so", "swarmnet_test_undefined_symbol.so"}));
+  EXPECT_EQ(broken_files,
+            (std::vector<std::string>{
+                "swarmnet_test_abi_mismatch.so", "swarmnet_test_bad_default.so",
+                "swarmnet_test_bad_default_type.so", "swarmnet_test_bad_param_name.so",
+                "swarmnet_test_no_entry.so", "swarmnet_test_not_elf.so",
+                "swarmnet_test_twice_declared.so", "swarmnet_test_undefined_symbol.so"}));
   // What discover() opened, find() reuses.
   const auto found = loader.find("test_routing");
   const auto listed = std::find_if(libraries.begin(), libraries.end(), [](const auto& library) {

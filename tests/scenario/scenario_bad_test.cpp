@@ -62,6 +62,8 @@ const std::vector<BadCase> kBadCases = {
   {"broken_plugin.yaml", {}, "15:13", "network.routing.plugin", "plugin 'test_no_entry': " + (test::kFixtures / "swarmnet_test_no_entry.so").string() + " is not a SwarmNet plugin"},
   {"missing_plugin_path.yaml", {}, "5:5", "plugin_paths.0", "'no/such/directory' (" + (test::kScenarioDir / "bad/no/such/directory").string() + ") is not a directory; expected an existing directory"},
   {"undeclared_plugin_param.yaml", {}, "12:9", "robots.controllers.0.params.sped_mps", "not a parameter of plugin 'test_controller' (did you mean 'speed_mps'?); expected one of speed_mps, rate_hz, count, enabled, mode, label (see `swarmnet plugins test_controller`)"},
+  {"cut_short_plugin_param.yaml", {}, "12:9", "robots.controllers.0.params.rat", "not a parameter of plugin 'test_controller' (did you mean 'rate_hz'?); expected one of speed_mps"},
+  {"one_letter_plugin_param.yaml", {}, "12:9", "robots.controllers.0.params.D", "not a parameter of plugin 'test_controller'; expected one of speed_mps, rate_hz, count, enabled, mode, label"},
   {"plugin_param_out_of_range.yaml", {}, "12:20", "robots.controllers.0.params.speed_mps", "50 is out of range; expected real 0..10 (m/s)"},
   {"plugin_param_wrong_type.yaml", {}, "17:12", "network.routing.params.ttl", "2.5 is not an integer; expected integer 1..255"},
   {"plugin_param_bad_choice.yaml", {}, "12:15", "robots.controllers.0.params.mode", "'randm' is not a valid choice (did you mean 'random'?); expected one of random, straight"},

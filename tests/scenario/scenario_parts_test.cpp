@@ -40,6 +40,20 @@ TEST(ScenarioNearestName, SuggestsOnlyLikelyTypos) {
   EXPECT_EQ(edit_distance("", "abc"), 3u);
 }
 
+TEST(ScenarioNearestName, NoSuggestionForAOneLetterNameOrAFarOneAndAPrefixCompletes) {
+  // One edit turns any one-letter name into another: "D" is no typo of "k".
+  EXPECT_EQ(nearest_name("D", {"k", "n_max", "step_s"}), std::nullopt);
+  EXPECT_EQ(nearest_name("kk", {"k"}), std::nullopt);  // as many edits as "k" has letters
+  // Long words allow length / 3 edits, short ones one.
+  EXPECT_EQ(nearest_name("tx_pwr_dbm", {"tx_power_dbm"}), "tx_power_dbm");
+  EXPECT_EQ(nearest_name("rnage", {"range_m"}), std::nullopt);
+  // A name cut short completes when exactly one declared name starts so.
+  EXPECT_EQ(nearest_name("rad", {"radius_m", "range_m"}), "radius_m");
+  EXPECT_EQ(nearest_name("RAD", {"radius_m"}), "radius_m");
+  EXPECT_EQ(nearest_name("ra", {"radius_m"}), std::nullopt);
+  EXPECT_EQ(nearest_name("ra_", {"ra_max", "ra_min"}), std::nullopt);
+}
+
 std::string problem_for(const ScalarRule& rule, const std::string& yaml) {
   std::string problem;
   const auto value = check_scalar(rule, YAML::Load(yaml), &problem);

@@ -36,6 +36,53 @@ done
 [[ -x $prefix/bin/swarmnet ]] || fail "swarmnet not installed"
 plugin_dir=$(dirname "$(find "$prefix" -name swarmnet_aodv.so | head -n 1)")
 [[ -f $plugin_dir/swarmnet_ideal_mac.so ]] || fail "in-tree plugins not installed"
+[[ -f $prefix/share/swarmnet/scripts/plot.py ]] || fail "the figure script (swarmnet plot) is not installed"
+
+step "the installed swarmnet knows no build or source path and finds its own plugins"
+# No path of the build or source tree in the command's constant data (debug info may name the
+# sources; .rodata holds what the program itself can read).
+objcopy -O binary --only-section=.rodata "$prefix/bin/swarmnet" "$tmp/rodata" ||
+  fail "objcopy .rodata of the installed swarmnet"
+for path in "$build" "$src"; do
+  grep -aqF "$path" "$tmp/rodata" && fail "the installed swarmnet holds the path $path"
+done
+# A copy of the prefix elsewhere (an installation moved) lists its own plugins and searches
+# nothing of the build tree.
+cp -a "$prefix" "$tmp/moved"
+env -u SWARMNET_PLUGIN_PATH "$tmp/moved/bin/swarmnet" plugins >"$tmp/own_plugins.txt" 2>&1 ||
+  { cat "$tmp/own_plugins.txt" >&2; fail "swarmnet plugins (installed, moved)"; }
+grep -q "$tmp/moved/.*swarmnet_aodv.so" "$tmp/own_plugins.txt" ||
+  { cat "$tmp/own_plugins.txt" >&2; fail "the moved installation does not list its own aodv"; }
+grep -qF "$build" "$tmp/own_plugins.txt" &&
+  { cat "$tmp/own_plugins.txt" >&2; fail "the installed swarmnet searches the build tree"; }
+# Its default scenario is the prefix's share/swarmnet/configs/quickstart.yaml.
+env -u SWARMNET_PLUGIN_PATH "$tmp/moved/bin/swarmnet" run -q --set duration_s=1 \
+  --out "$tmp/default_run" >"$tmp/default_run.out" 2>&1 ||
+  { cat "$tmp/default_run.out" >&2; fail "swarmnet run (installed, default scenario)"; }
+[[ -f $tmp/default_run/summary.json ]] || fail "the default scenario wrote no summary.json"
+rm -rf "$tmp/moved"
+
+step "the package's paths point under the prefix, not under a dependency's"
+# Eigen's package file, found by find_dependency(), resets PACKAGE_PREFIX_DIR to its own prefix.
+mkdir -p "$tmp/paths"
+cat >"$tmp/paths/CMakeLists.txt" <<'CMAKE'
+cmake_minimum_required(VERSION 3.25)
+project(SwarmNetPaths LANGUAGES CXX)
+find_package(SwarmNet 0.1 REQUIRED)
+message(STATUS "SWARMNET_INCLUDE_DIR=${SWARMNET_INCLUDE_DIR}")
+message(STATUS "SWARMNET_PLUGIN_INSTALL_DIR=${SWARMNET_PLUGIN_INSTALL_DIR}")
+CMAKE
+"$cmake" -S "$tmp/paths" -B "$tmp/paths/build" -G "$generator" -DCMAKE_CXX_COMPILER="$cxx" \
+  -DCMAKE_PREFIX_PATH="$prefix" >"$tmp/paths.log" 2>&1 ||
+  { cat "$tmp/paths.log" >&2; fail "find_package(SwarmNet) in a minimal project"; }
+real_prefix=$(realpath "$prefix")
+for variable in SWARMNET_INCLUDE_DIR SWARMNET_PLUGIN_INSTALL_DIR; do
+  value=$(sed -n "s/^-- $variable=//p" "$tmp/paths.log")
+  [[ -n $value ]] || { cat "$tmp/paths.log" >&2; fail "$variable is not set"; }
+  [[ $(realpath -m "$value") == "$real_prefix"/* ]] || fail "$variable is $value, not under $prefix"
+done
+[[ $(realpath -m "$(sed -n "s/^-- SWARMNET_PLUGIN_INSTALL_DIR=//p" "$tmp/paths.log")") == \
+  "$(realpath "$plugin_dir")" ]] || fail "SWARMNET_PLUGIN_INSTALL_DIR is not where the plugins are"
 
 step "build examples/out_of_tree against the installed SDK"
 "$cmake" -S "$src/examples/out_of_tree" -B "$tmp/example" -G "$generator" \

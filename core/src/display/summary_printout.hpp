@@ -1,4 +1,5 @@
-// The human-readable summary printed after a run, read from its summary.json document.
+// The human-readable summary printed after a run, read from its summary.json document. Unicast
+// and broadcast messages are shown apart: the delivery ratio, delay and hops are unicast only.
 #pragma once
 
 #include <cstdio>

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "plugin/plugin_error.hpp"
+#include "plugin/plugin_table_check.hpp"
 
 namespace swarmnet {
 
@@ -44,7 +45,10 @@ std::shared_ptr<PluginLibrary> PluginLibrary::open(const std::filesystem::path& 
                       std::to_string(kAbiVersion) + "; rebuild the plugin against this SDK");
   }
   const auto* descriptor = static_cast<const PluginDescriptor*>(entry->descriptor);
-  return std::shared_ptr<PluginLibrary>(new PluginLibrary(handle, descriptor, path));
+  // Owned from here: a table refused below closes the library on the way out.
+  std::shared_ptr<PluginLibrary> library(new PluginLibrary(handle, descriptor, path));
+  check_plugin_table(descriptor->info, path);
+  return library;
 }
 
 PluginLibrary::~PluginLibrary() { dlclose(handle_); }

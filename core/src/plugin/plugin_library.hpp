@@ -11,8 +11,9 @@ namespace swarmnet {
 class PluginLibrary {
  public:
   // Opens `path` with RTLD_NOW | RTLD_LOCAL (a missing symbol fails here, not mid-run), finds the
-  // entry symbol and checks the ABI version before reading the descriptor. Throws PluginError
-  // naming the path and dlerror()'s text, or both ABI versions.
+  // entry symbol and checks the ABI version before reading the descriptor, then the plugin's own
+  // table (plugin_table_check.hpp). Throws PluginError naming the path and dlerror()'s text, or
+  // both ABI versions, or the parameter the table gets wrong.
   static std::shared_ptr<PluginLibrary> open(const std::filesystem::path& path);
 
   PluginLibrary(const PluginLibrary&) = delete;

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <iterator>
 #include <set>
 #include <sstream>
 #include <system_error>
+
+#include "plugin/executable_layout.hpp"
 
 namespace swarmnet {
 
@@ -35,19 +38,10 @@ PluginLoader::PluginLoader(std::vector<std::filesystem::path> scenario_dirs)
   for (auto& dir : split_path_list(std::getenv("SWARMNET_PLUGIN_PATH"))) {
     search_path_.push_back(std::move(dir));
   }
-  search_path_.emplace_back(SWARMNET_BUILD_PLUGIN_DIR);
-  // The install prefix, found from the running command (bin/swarmnet -> lib/swarmnet/plugins),
-  // so an installation moved or installed with --prefix finds its own plugins; then the prefix
-  // configured at build time.
-  std::error_code ec;
-  const auto executable = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec && executable.parent_path().filename() == "bin") {
-    auto relative =
-        executable.parent_path().parent_path() / SWARMNET_INSTALL_LIBDIR / "swarmnet" / "plugins";
-    if (relative != std::filesystem::path(SWARMNET_INSTALL_PLUGIN_DIR))
-      search_path_.push_back(relative);
-  }
-  search_path_.emplace_back(SWARMNET_INSTALL_PLUGIN_DIR);
+  // The plugins beside the command (<prefix>/lib/swarmnet/plugins installed, <build>/plugins in
+  // a build tree), found from its executable: no build or install path is compiled in.
+  const auto own = executable_layout().plugin_dir;
+  if (!own.empty()) search_path_.push_back(own);
 }
 
 void PluginLoader::prepend_directories(std::vector<std::filesystem::path> dirs) {
@@ -68,8 +62,8 @@ std::shared_ptr<PluginLibrary> PluginLoader::find(const std::string& name) {
   if (auto it = cache_.find(name); it != cache_.end()) return it->second;
   const std::string file = plugin_file_name(name);
   std::ostringstream tried;
-  for (const auto& dir : search_path_) {
-    const auto candidate = dir / file;
+  for (auto dir = search_path_.begin(); dir != search_path_.end(); ++dir) {
+    const auto candidate = *dir / file;
     std::error_code ec;
     if (!std::filesystem::exists(candidate, ec)) {
       tried << "\n  " << candidate.string() << ": no such file";
@@ -86,7 +80,18 @@ std::shared_ptr<PluginLibrary> PluginLoader::find(const std::string& name) {
       return library;
     } catch (const PluginError& error) {
       // A broken candidate is reported, not skipped silently: finding a later one would hide it.
-      throw PluginError("plugin '" + name + "': " + error.what());
+      // But a later file of the same name may be the one meant, hidden by this one: say so.
+      std::string hidden;
+      for (auto later = std::next(dir); later != search_path_.end(); ++later) {
+        if (std::filesystem::exists(*later / file, ec)) hidden += "\n  " + (*later / file).string();
+      }
+      if (!hidden.empty()) {
+        hidden =
+            "\nThe first file found wins, and it hides another of the same name later on the "
+            "search path:" +
+            hidden + "\n(remove or rebuild the broken one, or reorder the search path)";
+      }
+      throw PluginError("plugin '" + name + "': " + error.what() + hidden);
     }
   }
   throw PluginError(

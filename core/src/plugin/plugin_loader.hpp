@@ -1,8 +1,8 @@
 // Finds plugins by name and creates instances of them.
 //
-// Search order (DESIGN.md section 4): directories given by the scenario, then each directory in
-// $SWARMNET_PLUGIN_PATH (colon-separated), then the build tree's plugin directory, then the
-// install prefix's. A plugin named NAME lives in a file swarmnet_NAME.so.
+// Search order (docs/plugins.md section 5): directories given by the scenario, then each
+// directory in $SWARMNET_PLUGIN_PATH (colon-separated), then the plugin directory beside the
+// running command (executable_layout.hpp). A plugin named NAME lives in a file swarmnet_NAME.so.
 #pragma once
 
 #include <filesystem>

@@ -7,6 +7,9 @@ namespace swarmnet {
 
 namespace {
 
+// A word this long or longer that begins exactly one candidate suggests that candidate.
+constexpr std::size_t kShortestPrefix = 3;
+
 char lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
 
 }  // namespace
@@ -35,17 +38,32 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 
 std::optional<std::string> nearest_name(std::string_view word,
                                         const std::vector<std::string>& candidates) {
-  const std::size_t allowed = word.size() <= 4 ? 1 : word.size() <= 8 ? 2 : 3;
+  // Close means a few edits for a long word and one for a short one, and always fewer edits than
+  // either name has characters: one edit turns any one-letter name into any other ("D" is no
+  // typo of "k").
+  const std::size_t allowed = std::max<std::size_t>(1, word.size() / 3);
   std::optional<std::string> best;
   std::size_t best_distance = allowed + 1;
   for (const auto& candidate : candidates) {
     const std::size_t distance = edit_distance(word, candidate);
-    if (distance < best_distance) {
+    if (distance < best_distance && distance < word.size() && distance < candidate.size()) {
       best_distance = distance;
       best = candidate;
     }
   }
-  return best;
+  if (best || word.size() < kShortestPrefix) return best;
+  // A name cut short ("rad" for "radius_m") is far in edits but plain to a reader.
+  std::optional<std::string> completed;
+  for (const auto& candidate : candidates) {
+    if (candidate.size() <= word.size() ||
+        !std::equal(word.begin(), word.end(), candidate.begin(),
+                    [](char a, char b) { return lower(a) == lower(b); })) {
+      continue;
+    }
+    if (completed) return std::nullopt;  // two names start so: neither is the likely one
+    completed = candidate;
+  }
+  return completed;
 }
 
 }  // namespace swarmnet

@@ -12,8 +12,10 @@ namespace swarmnet {
 // (optimal string alignment), ignoring ASCII case.
 std::size_t edit_distance(std::string_view a, std::string_view b);
 
-// The candidate nearest to `word`, when it is close enough to be a likely typo: at most 1 edit for
-// words up to 4 characters, 2 up to 8, 3 beyond. Ties go to the earlier candidate.
+// The candidate nearest to `word`, when it is close enough to be a likely typo: at most
+// max(1, length / 3) edits, and fewer edits than either name has characters; ties go to the
+// earlier candidate. Failing that, the one candidate that `word` (3 characters or more) begins.
+// Otherwise none: callers then list every declared name ("expected one of ...").
 std::optional<std::string> nearest_name(std::string_view word,
                                         const std::vector<std::string>& candidates);
 

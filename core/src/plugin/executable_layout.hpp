@@ -1,0 +1,28 @@
+// Where the running command's own files are, found from its executable and never from a path
+// compiled in: an installed swarmnet must not know the build tree it was built in.
+//
+//   installed   <prefix>/bin/swarmnet   plugins in <prefix>/<libdir>/swarmnet/plugins,
+//                                       data (configs/, scripts/) in <prefix>/share/swarmnet
+//   build tree  <build>/bin/swarmnet    plugins in <build>/plugins,
+//               (and <build>/tests/*)   data in <build>/share/swarmnet (links to the sources)
+//
+// The installed layout is recognised by its plugin directory; anything else is a build tree.
+#pragma once
+
+#include <filesystem>
+
+namespace swarmnet {
+
+struct ExecutableLayout {
+  std::filesystem::path plugin_dir;
+  std::filesystem::path data_dir;
+};
+
+// The layout around `executable` (an absolute path to a command in <root>/bin or <root>/tests).
+ExecutableLayout layout_around(const std::filesystem::path& executable);
+
+// The layout around the running process's executable (/proc/self/exe). Empty paths when the
+// executable cannot be read.
+ExecutableLayout executable_layout();
+
+}  // namespace swarmnet
