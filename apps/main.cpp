@@ -17,21 +17,21 @@
 #include "coupling/stop_signal.hpp"
 #include "default_scenario.hpp"
 #include "display/summary_printout.hpp"
+#include "experiments/stats_command.hpp"
+#include "experiments/sweep_command.hpp"
 #include "outputs/run_directory.hpp"
 #include "plot_command.hpp"
 #include "plugin/plugin_catalog.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "replay_command.hpp"
 #include "scenario/scenario_loader.hpp"
+#include "session/exit_codes.hpp"
 #include "session/run.hpp"
-#include "stats_command.hpp"
-#include "sweep_command.hpp"
 
 namespace {
 
-// Exit codes: 0 success, 1 the run failed, 2 bad input (usage, scenario, plugin).
-constexpr int kRunFailed = 1;
-constexpr int kBadInput = 2;
+using swarmnet::kExitBadInput;
+using swarmnet::kExitRunFailed;
 
 int fail(int code, const std::string& message) {
   std::fprintf(stderr, "swarmnet: error: %s\n", message.c_str());
@@ -96,7 +96,7 @@ int run_command(ScenarioArguments args, bool quiet, bool overwrite,
   try {
     scenario = load(args, loader);
   } catch (const std::exception& error) {
-    return fail(kBadInput, error.what());
+    return fail(kExitBadInput, error.what());
   }
   try {
     swarmnet::RunOptions options;
@@ -112,7 +112,7 @@ int run_command(ScenarioArguments args, bool quiet, bool overwrite,
     if (!quiet) swarmnet::print_summary(stdout, outcome.summary, outcome.dir);
   } catch (const std::exception& error) {
     const int signal = swarmnet::stop_signal();
-    return fail(signal != 0 ? 128 + signal : kRunFailed, error.what());
+    return fail(signal != 0 ? 128 + signal : kExitRunFailed, error.what());
   }
   return 0;
 }
@@ -139,7 +139,7 @@ int validate_command(const ScenarioArguments& args) {
         scenario.robots.controllers.size(), scenario.network.routing.name.c_str(),
         scenario.network.mac.name.c_str());
   } catch (const std::exception& error) {
-    return fail(kBadInput, error.what());
+    return fail(kExitBadInput, error.what());
   }
   return 0;
 }
@@ -153,7 +153,7 @@ int plugins_command(const std::string& name) {
       swarmnet::print_plugin_details(std::cout, *loader.find(name));
     }
   } catch (const std::exception& error) {
-    return fail(kBadInput, error.what());
+    return fail(kExitBadInput, error.what());
   }
   return 0;
 }
@@ -330,7 +330,7 @@ static int run_main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    return app.exit(error) == 0 ? 0 : kBadInput;
+    return app.exit(error) == 0 ? 0 : kExitBadInput;
   }
   if (*run) return run_command(run_args, quiet, overwrite, transport);
   if (*clean) return clean_command(clean_dirs);
@@ -367,7 +367,7 @@ static int run_main(int argc, char** argv) {
     return swarmnet::replay_command(replay_options);
   }
   if (*plugins) return plugins_command(plugin_name);
-  return kBadInput;
+  return kExitBadInput;
 }
 
 int main(int argc, char** argv) {
@@ -376,6 +376,6 @@ int main(int argc, char** argv) {
     return run_main(argc, argv);
   } catch (const std::exception& error) {
     // Every command handles its own errors; this is the last line against a crash.
-    return fail(kRunFailed, error.what());
+    return fail(kExitRunFailed, error.what());
   }
 }

@@ -10,16 +10,15 @@
 
 #include "plot_interpreter.hpp"
 #include "plugin/executable_layout.hpp"
+#include "session/exit_codes.hpp"
 
 namespace swarmnet {
 
 namespace {
 
-constexpr int kBadInput = 2;
-
 int refuse(const std::string& message) {
   std::fprintf(stderr, "swarmnet plot: error: %s\n", message.c_str());
-  return kBadInput;
+  return kExitBadInput;
 }
 
 }  // namespace

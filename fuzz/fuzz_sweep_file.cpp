@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "sweep_file.hpp"
+#include "experiments/sweep_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   // load_sweep() reads a file: one per fuzzing process, rewritten for every input.

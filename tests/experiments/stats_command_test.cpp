@@ -1,7 +1,7 @@
 // `swarmnet stats` on results files written in the test: short labels for grid values that are
 // YAML mappings, comparisons against a baseline or within one factor, Holm's correction, and
 // intervals that stay inside [0, 1] for ratios.
-#include "stats_command.hpp"
+#include "experiments/stats_command.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "command_runner.hpp"
-#include "group_labels.hpp"
+#include "experiments/group_labels.hpp"
 
 namespace swarmnet {
 namespace {

@@ -6,11 +6,11 @@
 #include <sstream>
 #include <vector>
 
+#include "experiments/stats_command.hpp"
 #include "stats/holm_correction.hpp"
 #include "stats/proportion_interval.hpp"
 #include "stats/sample_statistics.hpp"
 #include "stats/student_t.hpp"
-#include "stats_command.hpp"
 
 namespace swarmnet::stats {
 namespace {

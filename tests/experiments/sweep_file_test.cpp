@@ -1,12 +1,12 @@
 // Sweep files: checking with file:line:column, expansion order, run ids, results.csv columns.
-#include "sweep_file.hpp"
+#include "experiments/sweep_file.hpp"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 
 #include "command_runner.hpp"
-#include "sweep_results.hpp"
+#include "experiments/sweep_results.hpp"
 
 namespace swarmnet {
 namespace {

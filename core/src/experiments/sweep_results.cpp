@@ -1,4 +1,4 @@
-#include "sweep_results.hpp"
+#include "experiments/sweep_results.hpp"
 
 #include <fstream>
 #include <map>

@@ -1,4 +1,4 @@
-#include "sweep_command.hpp"
+#include "experiments/sweep_command.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -21,20 +21,19 @@
 
 #include "coupling/process_spawn.hpp"
 #include "coupling/stop_signal.hpp"
+#include "experiments/sweep_file.hpp"
+#include "experiments/sweep_results.hpp"
 #include "outputs/atomic_file.hpp"
 #include "outputs/output_files.hpp"
 #include "outputs/run_error.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "scenario/scenario_loader.hpp"
-#include "sweep_file.hpp"
-#include "sweep_results.hpp"
+#include "session/exit_codes.hpp"
 
 namespace swarmnet {
 
 namespace {
 
-constexpr int kRunFailed = 1;
-constexpr int kBadInput = 2;
 constexpr const char* kChildLog = "output.log";  // the run's stdout and stderr
 
 std::string format_duration(double seconds) {
@@ -229,13 +228,13 @@ int sweep_command(const SweepOptions& options) {
     runs = spec.expand();
   } catch (const std::exception& error) {
     std::fprintf(stderr, "swarmnet: error: %s\n", error.what());
-    return kBadInput;
+    return kExitBadInput;
   }
   if (const auto problems = validate_runs(spec, runs); !problems.empty()) {
     std::fprintf(stderr, "swarmnet: error: the sweep %s gives invalid scenarios:\n",
                  options.file.string().c_str());
     for (const auto& line : problems) std::fprintf(stderr, "%s\n", line.c_str());
-    return kBadInput;
+    return kExitBadInput;
   }
   const std::filesystem::path out =
       !options.out.empty() ? options.out
@@ -254,14 +253,14 @@ int sweep_command(const SweepOptions& options) {
   if (ec) {
     std::fprintf(stderr, "swarmnet: error: cannot create %s: %s\n", runs_dir.string().c_str(),
                  ec.message().c_str());
-    return kRunFailed;
+    return kExitRunFailed;
   }
   std::optional<SweepLock> lock;
   try {
     lock.emplace(out);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "swarmnet: error: %s\n", error.what());
-    return kRunFailed;
+    return kExitRunFailed;
   }
   {
     std::ifstream in(options.file, std::ios::binary);
@@ -343,7 +342,7 @@ int sweep_command(const SweepOptions& options) {
     write_file_atomically(out / "results.csv", results_csv(spec, results));
   } catch (const std::exception& error) {
     std::fprintf(stderr, "swarmnet: error: %s\n", error.what());
-    return kRunFailed;
+    return kExitRunFailed;
   }
   std::size_t ok_runs = 0;
   for (const auto& result : results) ok_runs += result.status == "ok" ? 1 : 0;
@@ -362,7 +361,7 @@ int sweep_command(const SweepOptions& options) {
       std::fprintf(stderr, "  failed: %s (log: %s)\n", result.run->id.c_str(),
                    (dir / kChildLog).string().c_str());
     }
-    return kRunFailed;
+    return kExitRunFailed;
   }
   return 0;
 }

@@ -1,4 +1,4 @@
-#include "stats_command.hpp"
+#include "experiments/stats_command.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,8 @@
 #include <set>
 #include <sstream>
 
-#include "group_labels.hpp"
+#include "experiments/group_labels.hpp"
+#include "session/exit_codes.hpp"
 #include "stats/holm_correction.hpp"
 #include "stats/proportion_interval.hpp"
 #include "stats/sample_statistics.hpp"
@@ -21,8 +22,6 @@
 namespace swarmnet {
 
 namespace {
-
-constexpr int kBadInput = 2;
 
 std::string number(double value, int precision = 6) {
   if (std::isnan(value)) return "-";
@@ -109,7 +108,7 @@ std::vector<std::vector<std::string>> read_csv(std::istream& in) {
 int stats_command(const StatsOptions& options, std::ostream& out) {
   auto fail = [](const std::string& message) {
     std::fprintf(stderr, "swarmnet: error: %s\n", message.c_str());
-    return kBadInput;
+    return kExitBadInput;
   };
   std::ifstream in(options.file);
   if (!in) return fail("cannot read " + options.file.string());

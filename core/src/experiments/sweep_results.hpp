@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "sweep_file.hpp"
+#include "experiments/sweep_file.hpp"
 
 namespace swarmnet {
 

@@ -1,4 +1,4 @@
-#include "group_labels.hpp"
+#include "experiments/group_labels.hpp"
 
 #include <yaml-cpp/yaml.h>
 

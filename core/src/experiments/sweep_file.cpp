@@ -1,4 +1,4 @@
-#include "sweep_file.hpp"
+#include "experiments/sweep_file.hpp"
 
 #include <yaml-cpp/yaml.h>
 
