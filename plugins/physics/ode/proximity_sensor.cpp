@@ -75,10 +75,21 @@ void ProximitySensor::sense(std::span<const RobotBody> bodies, std::size_t robot
   const Vec2& origin = self.position;
   const double reach_m = self.radius_m + range_m;  // measured from the centre
   const double spacing_rad = 2.0 * std::numbers::pi / static_cast<double>(rays.size());
-  directions_.resize(rays.size());
+  // Ray k's direction is its body-frame unit vector turned by the heading: two trigonometric
+  // calls per robot instead of two per ray.
+  if (offsets_.size() != rays.size()) {
+    offsets_.resize(rays.size());
+    directions_.resize(rays.size());
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+      const double angle = spacing_rad * static_cast<double>(k);
+      offsets_[k] = Vec2(std::cos(angle), std::sin(angle));
+    }
+  }
+  const double c = std::cos(self.heading_rad);
+  const double s = std::sin(self.heading_rad);
   for (std::size_t k = 0; k < rays.size(); ++k) {
-    const double angle = self.heading_rad + spacing_rad * static_cast<double>(k);
-    directions_[k] = Vec2(std::cos(angle), std::sin(angle));
+    const Vec2& o = offsets_[k];
+    directions_[k] = Vec2(c * o.x() - s * o.y(), s * o.x() + c * o.y());
     rays[k] = std::min(ray_to_walls(arena_, origin, directions_[k]), reach_m);
   }
   for (const Rect& obstacle : arena_.obstacles) {

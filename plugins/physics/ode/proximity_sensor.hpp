@@ -35,7 +35,8 @@ class ProximitySensor {
   double max_radius_m_ = 0.0;
   SpatialGrid grid_;
   std::vector<Vec2> points_;
-  mutable std::vector<Vec2> directions_;
+  mutable std::vector<Vec2> offsets_;     // ray directions at heading 0
+  mutable std::vector<Vec2> directions_;  // turned by the current robot's heading
 };
 
 // Distances along unit direction `u` from `origin`; infinity for a miss.
