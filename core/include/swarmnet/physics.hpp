@@ -10,6 +10,12 @@
 
 namespace swarmnet {
 
+// Where a movable object (Arena::objects) is: centre and heading.
+struct ObjectPose {
+  Vec2 position = Vec2::Zero();  // m
+  double heading_rad = 0.0;
+};
+
 class Physics : public Plugin {
  public:
   static constexpr PluginKind kKind = PluginKind::physics;
@@ -28,6 +34,11 @@ class Physics : public Plugin {
   // setup() or step().
   virtual void sense_proximity(std::span<const RobotBody> bodies, std::size_t robot, double range_m,
                                std::span<double> rays) const = 0;
+
+  // Poses of the arena's movable objects, in the order of Arena::objects, as of the last setup()
+  // or step(). An engine that does not move objects returns an empty span (the default); one
+  // that accepts objects in setup() returns one pose per object.
+  [[nodiscard]] virtual std::span<const ObjectPose> object_poses() const { return {}; }
 };
 
 }  // namespace swarmnet

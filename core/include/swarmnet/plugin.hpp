@@ -27,7 +27,7 @@ namespace swarmnet {
 
 // Bumped whenever a change to any SDK header changes the layout or the virtual tables that a
 // plugin and the kernel share.
-inline constexpr std::uint32_t kAbiVersion = 2;
+inline constexpr std::uint32_t kAbiVersion = 3;  // 3: Physics::object_poses, Arena::objects
 
 enum class PluginKind : std::uint8_t { physics, propagation, mac, routing, controller };
 
