@@ -3,7 +3,8 @@
 // Prints one JSON object: CPU per simulated second, real-time factor, CPU per robot-step, split
 // into step() and the proximity rings (sense_proximity()).
 //
-// Usage: physics_scaling PLUGIN_DIR ENGINE ROBOTS SIM_S [DENSITY_PER_M2] [SEED]
+// Usage: physics_scaling PLUGIN_DIR ENGINE ROBOTS SIM_S [DENSITY_PER_M2] [SEED] [NAME=VALUE...]
+// (NAME=VALUE: a plugin parameter other than its default.)
 // The controller is a minimal diffusion (drive at 0.5 m/s, turn in place away from anything a
 // front ray sees within 0.1 m, a random turn every ~10 s), written here so that its cost is
 // negligible next to the physics and identical for both engines; it is not timed.
@@ -40,7 +41,8 @@ double wall_now_s() {
 }
 
 // The plugin's library stays open for the life of the process (its objects are alive until exit).
-std::unique_ptr<Physics> load(const std::string& dir, const std::string& name) {
+std::unique_ptr<Physics> load(const std::string& dir, const std::string& name,
+                              const std::vector<std::string>& overrides) {
   const std::string path = dir + "/swarmnet_" + name + ".so";
   void* library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (library == nullptr) throw std::runtime_error(std::string("dlopen: ") + dlerror());
@@ -56,6 +58,31 @@ std::unique_ptr<Physics> load(const std::string& dir, const std::string& name) {
   swarmnet::PluginArgs args;
   for (const swarmnet::ParamSpec& spec : descriptor->info.params) {
     args.params.set(spec.name, spec.default_value);
+  }
+  for (const std::string& item : overrides) {
+    const std::size_t equals = item.find('=');
+    const std::string key = item.substr(0, equals);
+    const std::string value = equals == std::string::npos ? "" : item.substr(equals + 1);
+    bool known = false;
+    for (const swarmnet::ParamSpec& spec : descriptor->info.params) {
+      if (spec.name != key) continue;
+      known = true;
+      switch (spec.type) {
+        case swarmnet::ParamType::real:
+          args.params.set(key, std::stod(value));
+          break;
+        case swarmnet::ParamType::integer:
+          args.params.set(key, static_cast<std::int64_t>(std::stoll(value)));
+          break;
+        case swarmnet::ParamType::boolean:
+          args.params.set(key, value == "true");
+          break;
+        case swarmnet::ParamType::text:
+          args.params.set(key, value);
+          break;
+      }
+    }
+    if (!known) throw std::runtime_error(name + " has no parameter " + key);
   }
   std::unique_ptr<swarmnet::Plugin> made = descriptor->create(args);
   return std::unique_ptr<Physics>(static_cast<Physics*>(made.release()));
@@ -108,7 +135,9 @@ int main(int argc, char** argv) {
   std::vector<Walker> walkers(robots);
   for (Walker& w : walkers) w.next_random_turn_s = 10.0 * -std::log(1.0 - random.uniform());
 
-  std::unique_ptr<Physics> physics = load(dir, engine);
+  std::vector<std::string> overrides;
+  for (int a = 7; a < argc; ++a) overrides.emplace_back(argv[a]);
+  std::unique_ptr<Physics> physics = load(dir, engine, overrides);
   physics->setup(arena, bodies);
   std::vector<double> rays(robots * kRays, kRangeM);
 

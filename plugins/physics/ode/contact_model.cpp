@@ -14,12 +14,19 @@ void ContactModel::near_callback(void* data, dGeomID a, dGeomID b) {
   static_cast<ContactModel*>(data)->collide(a, b);
 }
 
+void ContactModel::mark(dBodyID body) {
+  if (body == nullptr) return;
+  const auto tag = reinterpret_cast<std::uintptr_t>(dBodyGetData(body));
+  if (tag > 0 && tag <= touching_->size()) (*touching_)[tag - 1] = 1;
+}
+
 void ContactModel::collide(dGeomID a, dGeomID b) {
   const dBodyID body_a = dGeomGetBody(a);
   const dBodyID body_b = dGeomGetBody(b);
   if (body_a == nullptr && body_b == nullptr) return;  // two pieces of static geometry
   std::array<dContact, kMaxContactsPerPair> contacts{};
   const int found = dCollide(a, b, kMaxContactsPerPair, &contacts[0].geom, sizeof(dContact));
+  if (found > 0 && touching_ != nullptr) mark(body_a), mark(body_b);
   for (int i = 0; i < found; ++i) {
     dContact& contact = contacts[static_cast<std::size_t>(i)];
     dContactGeom& geom = contact.geom;

@@ -9,7 +9,10 @@
 
 #include <ode/ode.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "ode_parameters.hpp"
 
@@ -19,11 +22,15 @@ class ContactModel {
  public:
   explicit ContactModel(const OdeParameters& parameters);
 
-  // Call before dSpaceCollide with this model as its data.
-  void begin(dWorldID world, dJointGroupID group) {
+  // Call before dSpaceCollide with this model as its data. `touching` (one flag per robot,
+  // cleared here) receives 1 for every robot that gets a contact: robots are the bodies whose
+  // data is their index + 1 (robot_drive.hpp).
+  void begin(dWorldID world, dJointGroupID group, std::vector<std::uint8_t>* touching) {
     world_ = world;
     group_ = group;
     count_ = 0;
+    touching_ = touching;
+    if (touching_ != nullptr) std::fill(touching_->begin(), touching_->end(), 0);
   }
   [[nodiscard]] std::size_t last_count() const { return count_; }
 
@@ -36,6 +43,7 @@ class ContactModel {
 
  private:
   void collide(dGeomID a, dGeomID b);
+  void mark(dBodyID body);
 
   double friction_;
   double erp_;
@@ -43,6 +51,7 @@ class ContactModel {
   dWorldID world_ = nullptr;
   dJointGroupID group_ = nullptr;
   std::size_t count_ = 0;
+  std::vector<std::uint8_t>* touching_ = nullptr;
 };
 
 }  // namespace swarmnet::ode

@@ -1,5 +1,7 @@
 #include "ode_parameters.hpp"
 
+#include <string>
+
 namespace swarmnet::ode {
 
 std::vector<ParamSpec> OdeParameters::schema() {
@@ -17,6 +19,10 @@ std::vector<ParamSpec> OdeParameters::schema() {
       real_param("contact_friction", d.contact_friction, "",
                  "Coulomb coefficient between bodies in contact (robot-robot, robot-wall, "
                  "robot-obstacle), in the plane",
+                 0.0, 10.0),
+      real_param("object_floor_friction", d.object_floor_friction, "",
+                 "Coulomb coefficient of movable objects (arena.objects) on the floor: a pushed "
+                 "object resists with at most object_floor_friction * its mass * gravity",
                  0.0, 10.0),
       real_param("gravity_mps2", d.gravity_mps2, "m/s^2",
                  "gravity; only the normal force on the floor (mass * gravity) uses it", 0.0,
@@ -44,11 +50,14 @@ std::vector<ParamSpec> OdeParameters::schema() {
                  0.01, 1.0),
       integer_param("solver_iterations", d.solver_iterations, "",
                     "iterations of ODE's QuickStep solver per sub-step", 1, 1000),
-      text_param("drive", "servo_force",
-                 "how the wheels' friction drives the body: servo_force (a bounded force towards "
-                 "the wheels' velocity before each sub-step) or motor_joint (ODE velocity motors "
-                 "with the same bounds, solved with the contacts); see the description",
-                 {"servo_force", "motor_joint"}),
+      text_param("drive", "motor_joint_in_contact",
+                 "how the wheels' friction drives the body: motor_joint (ODE velocity motors "
+                 "bounded by the friction, solved with the contacts: exact static friction); "
+                 "motor_joint_in_contact (the same, but a robot that touches nothing in a "
+                 "sub-step gets the motors' solution as a force, skipping the solver: same "
+                 "motion, several times faster); servo_force (always the force: a pushed robot "
+                 "creeps and a pushing one droops)",
+                 {"motor_joint_in_contact", "motor_joint", "servo_force"}),
   };
 }
 
@@ -57,6 +66,7 @@ OdeParameters OdeParameters::from(const ParamSet& params) {
   p.robot_mass_kg = params.real("robot_mass_kg");
   p.wheel_friction = params.real("wheel_friction");
   p.contact_friction = params.real("contact_friction");
+  p.object_floor_friction = params.real("object_floor_friction");
   p.gravity_mps2 = params.real("gravity_mps2");
   p.contact_erp = params.real("contact_erp");
   p.contact_cfm_m_per_n = params.real("contact_cfm_m_per_n");
@@ -64,8 +74,10 @@ OdeParameters OdeParameters::from(const ParamSet& params) {
   p.max_substep_s = params.real("max_substep_s");
   p.max_travel_fraction = params.real("max_travel_fraction");
   p.solver_iterations = static_cast<int>(params.integer("solver_iterations"));
-  p.drive =
-      params.text("drive") == "motor_joint" ? DriveModel::motor_joint : DriveModel::servo_force;
+  const std::string& drive = params.text("drive");
+  p.drive = drive == "motor_joint"   ? DriveModel::motor_joint
+            : drive == "servo_force" ? DriveModel::servo_force
+                                     : DriveModel::motor_joint_in_contact;
   return p;
 }
 

@@ -9,12 +9,13 @@
 namespace swarmnet::ode {
 
 // How the wheels' friction drives the body (robot_drive.hpp).
-enum class DriveModel { servo_force, motor_joint };
+enum class DriveModel { motor_joint_in_contact, motor_joint, servo_force };
 
 struct OdeParameters {
   double robot_mass_kg = 1.8;
-  double wheel_friction = 1.0;    // Coulomb coefficient, wheels on the floor
-  double contact_friction = 0.3;  // Coulomb coefficient, body against body or wall
+  double wheel_friction = 1.0;         // Coulomb coefficient, wheels on the floor
+  double contact_friction = 0.3;       // Coulomb coefficient, body against body or wall
+  double object_floor_friction = 0.5;  // Coulomb coefficient, movable objects on the floor
   double gravity_mps2 = 9.81;
   double contact_erp = 0.2;
   double contact_cfm_m_per_n = 1e-5;
@@ -22,7 +23,7 @@ struct OdeParameters {
   double max_substep_s = 0.01;
   double max_travel_fraction = 0.5;
   int solver_iterations = 20;
-  DriveModel drive = DriveModel::servo_force;
+  DriveModel drive = DriveModel::motor_joint_in_contact;
 
   // Every parameter at its declared default; used by the plugin's info() and its tests.
   static std::vector<ParamSpec> schema();

@@ -19,11 +19,12 @@ PluginInfo OdePhysics::info() {
       "(target 0), each limited to wheel_friction * mass * gravity, and about the vertical "
       "(target (right - left) / axle) limited to that force times axle / 2. A robot so "
       "accelerates at most at wheel_friction * gravity, carries momentum, pushes other robots "
-      "with at most its traction and slips when pushed harder. drive: servo_force applies the "
-      "bounded force before each sub-step (no solver rows for a free robot: fast); motor_joint "
-      "uses ODE linear and angular motors with the same limits, solved with the contacts. Hinged "
-      "wheels would give the same limits at five times the constraint rows and with stiff "
-      "wheel-floor contacts.\n"
+      "with at most its traction and slips when pushed harder. The servo is a pair of ODE "
+      "velocity motors (linear, two body axes; angular) solved with the contacts, so static "
+      "friction holds exactly; with drive: motor_joint_in_contact (default) they are enabled "
+      "only for a robot that touches something in the sub-step, and a free robot gets their "
+      "exact solution as a force instead, without solver rows. Hinged wheels would give the "
+      "same limits at five times the constraint rows and with stiff wheel-floor contacts.\n"
       "Contacts: ODE's quad-tree space finds touching pairs in time linear in the number of "
       "bodies; "
       "each contact point becomes a contact joint with Coulomb friction contact_friction in the "
@@ -39,8 +40,12 @@ PluginInfo OdePhysics::info() {
       "body can tunnel through a wall, an obstacle or another robot. Single-threaded; bodies and "
       "geoms are created in robot order and ODE's solver generator is re-seeded every sub-step, "
       "so a scenario and seed give identical results.\n"
-      "Proximity: rays are cast analytically against the walls, the obstacles and the other "
-      "robots' discs (from a uniform grid), as in kinematic2d.",
+      "Movable objects (arena.objects): boxes and upright cylinders with their mass, pushed by "
+      "robots through the same contacts; on the floor each resists sliding with at most "
+      "object_floor_friction * mass * gravity and spinning with that force times 2/3 of its "
+      "(equal-area) radius. Their poses are written to objects.csv in the run directory.\n"
+      "Proximity: rays are cast analytically against the walls, the obstacles, the movable "
+      "objects and the other robots' discs (from a uniform grid), as in kinematic2d.",
       OdeParameters::schema()};
 }
 
@@ -68,25 +73,32 @@ void OdePhysics::setup(const Arena& arena, std::span<const RobotBody> bodies) {
   world_->add_static_geometry(arena);
   drives_.assign(bodies.size(), RobotDrive{});
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    drives_[i].create(world_->world(), world_->space(), bodies[i], parameters_);
+    drives_[i].create(world_->world(), world_->space(), bodies[i], i, parameters_);
   }
+  touching_.assign(bodies.size(), 0);
+  objects_.create(world_->world(), world_->space(), arena.objects, parameters_);
   const double area_m2 = arena.width_m * arena.height_m;
   const double robots = static_cast<double>(std::max<std::size_t>(bodies.size(), 1));
-  proximity_.setup(arena, bodies,
+  proximity_.setup(arena, bodies, objects_.poses(),
                    std::max(2.0 * max_radius_m, std::sqrt(area_m2 / (4.0 * robots))));
   last_substeps_ = 0;
 }
 
 int OdePhysics::substeps_for(double dt_s, std::span<const RobotBody> bodies) const {
-  double fastest_mps = 0.0;
+  double fastest_mps = objects_.fastest_mps();
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const RobotBody& body = bodies[i];
     fastest_mps = std::max(
         {fastest_mps, std::abs(body.left_mps), std::abs(body.right_mps), drives_[i].speed_mps()});
   }
   double substeps = std::ceil(dt_s / parameters_.max_substep_s);
-  if (min_radius_m_ > 0.0) {
-    const double travel_m = parameters_.max_travel_fraction * min_radius_m_;
+  double smallest_m = min_radius_m_;
+  if (objects_.smallest_half_extent_m() > 0.0) {
+    smallest_m = smallest_m > 0.0 ? std::min(smallest_m, objects_.smallest_half_extent_m())
+                                  : objects_.smallest_half_extent_m();
+  }
+  if (smallest_m > 0.0) {
+    const double travel_m = parameters_.max_travel_fraction * smallest_m;
     substeps = std::max(substeps, std::ceil(fastest_mps * dt_s / travel_m));
   }
   if (!(substeps <= kMaxSubsteps)) return kMaxSubsteps;
@@ -98,14 +110,18 @@ void OdePhysics::step(double dt_s, std::span<RobotBody> bodies) {
   const double h_s = dt_s / substeps;
   for (std::size_t i = 0; i < bodies.size(); ++i) drives_[i].command(bodies[i]);
   for (int s = 0; s < substeps; ++s) {
-    for (const RobotDrive& drive : drives_) drive.apply_servo(h_s);
-    world_->step(h_s);
+    world_->collide(&touching_);
+    for (std::size_t i = 0; i < drives_.size(); ++i) {
+      drives_[i].prepare(h_s, touching_[i] != 0, world_->world(), world_->substep_joints());
+    }
+    world_->advance(h_s);
   }
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     drives_[i].flatten();
     drives_[i].read_pose(bodies[i]);
   }
-  proximity_.update(bodies);
+  objects_.read_poses();
+  proximity_.update(bodies, objects_.poses());
   last_substeps_ = substeps;
 }
 

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
 
+#include "movable_objects.hpp"
 #include "ode_parameters.hpp"
 #include "ode_world.hpp"
 #include "proximity_sensor.hpp"
@@ -24,10 +26,14 @@ class OdePhysics final : public Physics {
   void step(double dt_s, std::span<RobotBody> bodies) override;
   void sense_proximity(std::span<const RobotBody> bodies, std::size_t robot, double range_m,
                        std::span<double> rays) const override;
+  [[nodiscard]] std::span<const ObjectPose> object_poses() const override {
+    return objects_.poses();
+  }
 
   // Sub-steps the next step of dt_s would take for `bodies`' commanded wheel speeds: enough that
   // each is at most max_substep_s long and no body, at the larger of its current speed and its
-  // fastest commanded wheel speed, moves more than max_travel_fraction of the smallest radius.
+  // fastest commanded wheel speed, moves more than max_travel_fraction of the smallest robot
+  // radius or half the smallest object extent.
   [[nodiscard]] int substeps_for(double dt_s, std::span<const RobotBody> bodies) const;
   // Sub-steps the last step() took, and contacts in its last sub-step.
   [[nodiscard]] int last_substeps() const { return last_substeps_; }
@@ -42,6 +48,8 @@ class OdePhysics final : public Physics {
   OdeParameters parameters_;
   std::unique_ptr<OdeWorld> world_;
   std::vector<RobotDrive> drives_;
+  std::vector<std::uint8_t> touching_;  // per robot: has a contact in the current sub-step
+  MovableObjects objects_;
   double min_radius_m_ = 0.0;
   ProximitySensor proximity_;
   int last_substeps_ = 0;

@@ -11,6 +11,7 @@
 #include <ode/ode.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "contact_model.hpp"
@@ -41,12 +42,17 @@ class OdeWorld {
   // one box per obstacle rectangle.
   void add_static_geometry(const Arena& arena);
 
-  // One sub-step of h seconds: finds contacts in the space (geoms in insertion order), adds a
-  // contact joint for each, advances the world with QuickStep, and drops the contact joints.
-  void step(double h_s);
+  // One sub-step of h seconds, in two halves. collide(): finds contacts in the space (geoms in
+  // insertion order) and adds a contact joint for each, flagging in `touching` the robots that
+  // got one. advance(): advances the world with QuickStep and drops the contact joints.
+  void collide(std::vector<std::uint8_t>* touching);
+  void advance(double h_s);
 
   [[nodiscard]] dWorldID world() const { return world_; }
   [[nodiscard]] dSpaceID space() const { return space_; }
+  // Joints that live for one sub-step (contacts, and motors of robots in contact): emptied by
+  // advance().
+  [[nodiscard]] dJointGroupID substep_joints() const { return contact_group_; }
   // Contacts created in the last step(), for tests and diagnostics.
   [[nodiscard]] std::size_t last_contact_count() const { return contacts_.last_count(); }
 

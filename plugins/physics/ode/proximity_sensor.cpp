@@ -54,15 +54,34 @@ double ray_to_disc(const Vec2& centre, double radius_m, const Vec2& origin, cons
   return along - std::sqrt(discriminant);
 }
 
-void ProximitySensor::setup(const Arena& arena, std::span<const RobotBody> bodies, double cell_m) {
+double ray_to_object(const ArenaObject& shape, const ObjectPose& pose, const Vec2& origin,
+                     const Vec2& u) {
+  if (shape.shape == ArenaObject::Shape::cylinder) {
+    return ray_to_disc(pose.position, shape.radius_m, origin, u);
+  }
+  // The ray in the box's frame, against the box as an axis-aligned rectangle there.
+  const double c = std::cos(pose.heading_rad);
+  const double s = std::sin(pose.heading_rad);
+  const Vec2 offset = origin - pose.position;
+  const Vec2 local_origin(c * offset.x() + s * offset.y(), -s * offset.x() + c * offset.y());
+  const Vec2 local_u(c * u.x() + s * u.y(), -s * u.x() + c * u.y());
+  const Rect box{-0.5 * shape.size_x_m, -0.5 * shape.size_y_m, 0.5 * shape.size_x_m,
+                 0.5 * shape.size_y_m};
+  return ray_to_rect(box, local_origin, local_u);
+}
+
+void ProximitySensor::setup(const Arena& arena, std::span<const RobotBody> bodies,
+                            std::span<const ObjectPose> objects, double cell_m) {
   arena_ = arena;
   max_radius_m_ = 0.0;
   for (const RobotBody& body : bodies) max_radius_m_ = std::max(max_radius_m_, body.radius_m);
   grid_.reset(Rect{0.0, 0.0, arena.width_m, arena.height_m}, cell_m);
-  update(bodies);
+  update(bodies, objects);
 }
 
-void ProximitySensor::update(std::span<const RobotBody> bodies) {
+void ProximitySensor::update(std::span<const RobotBody> bodies,
+                             std::span<const ObjectPose> objects) {
+  object_poses_.assign(objects.begin(), objects.end());
   points_.resize(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i) points_[i] = bodies[i].position;
   grid_.build(points_);
@@ -98,6 +117,18 @@ void ProximitySensor::sense(std::span<const RobotBody> bodies, std::size_t robot
     if ((origin - nearest).norm() > reach_m) continue;
     for (std::size_t k = 0; k < rays.size(); ++k) {
       rays[k] = std::min(rays[k], ray_to_rect(obstacle, origin, directions_[k]));
+    }
+  }
+  for (std::size_t o = 0; o < object_poses_.size(); ++o) {
+    const ArenaObject& shape = arena_.objects[o];
+    const ObjectPose& pose = object_poses_[o];
+    // The radius of the disc around the centre that holds the object, whatever its heading.
+    const double reach_of_object_m = shape.shape == ArenaObject::Shape::box
+                                         ? std::hypot(0.5 * shape.size_x_m, 0.5 * shape.size_y_m)
+                                         : shape.radius_m;
+    if ((pose.position - origin).norm() > reach_m + reach_of_object_m) continue;
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+      rays[k] = std::min(rays[k], ray_to_object(shape, pose, origin, directions_[k]));
     }
   }
   const auto ray_count = static_cast<std::int64_t>(rays.size());

@@ -15,9 +15,10 @@ void set_yaw(dBodyID body, double yaw_rad) {
   dBodySetQuaternion(body, q);
 }
 
-void RobotDrive::create(dWorldID world, dSpaceID space, const RobotBody& body,
+void RobotDrive::create(dWorldID world, dSpaceID space, const RobotBody& body, std::size_t index,
                         const OdeParameters& parameters) {
   body_ = dBodyCreate(world);
+  dBodySetData(body_, reinterpret_cast<void*>(index + 1));
   dMass mass;
   // A cylinder along z (direction 3) as tall as it is wide; only its yaw inertia m r^2 / 2 acts.
   dMassSetCylinderTotal(&mass, parameters.robot_mass_kg, 3, body.radius_m, 2.0 * body.radius_m);
@@ -35,38 +36,52 @@ void RobotDrive::create(dWorldID world, dSpaceID space, const RobotBody& body,
 
   max_force_n_ = parameters.wheel_friction * parameters.robot_mass_kg * parameters.gravity_mps2;
   max_torque_nm_ = max_force_n_ * 0.5 * body.axle_m;
-  servo_ = parameters.drive == DriveModel::servo_force;
-  if (!servo_) {
-    linear_ = dJointCreateLMotor(world, nullptr);
-    dJointAttach(linear_, body_, nullptr);
-    dJointSetLMotorNumAxes(linear_, 2);
-    dJointSetLMotorAxis(linear_, 0, 1, 1.0, 0.0, 0.0);  // along the heading, body frame
-    dJointSetLMotorAxis(linear_, 1, 1, 0.0, 1.0, 0.0);  // across it
-    dJointSetLMotorParam(linear_, dParamFMax, max_force_n_);
-    dJointSetLMotorParam(linear_, dParamFMax2, max_force_n_);
-    dJointSetLMotorParam(linear_, dParamVel2, 0.0);
-
-    angular_ = dJointCreateAMotor(world, nullptr);
-    dJointAttach(angular_, body_, nullptr);
-    dJointSetAMotorMode(angular_, dAMotorUser);
-    dJointSetAMotorNumAxes(angular_, 1);
-    dJointSetAMotorAxis(angular_, 0, 1, 0.0, 0.0, 1.0);
-    dJointSetAMotorParam(angular_, dParamFMax, max_torque_nm_);
-  }
+  model_ = parameters.drive;
+  if (model_ == DriveModel::motor_joint) add_motors(world, nullptr);
   command(body);
+}
+
+void RobotDrive::add_motors(dWorldID world, dJointGroupID group) {
+  linear_ = dJointCreateLMotor(world, group);
+  dJointAttach(linear_, body_, nullptr);
+  dJointSetLMotorNumAxes(linear_, 2);
+  // Axes attached to the body (rel = 1); ODE takes them in world coordinates at this call and
+  // keeps them in the body's frame: along the heading and across it, as the body stands now.
+  const double yaw_rad = yaw_of(body_);
+  const double c = std::cos(yaw_rad);
+  const double s = std::sin(yaw_rad);
+  dJointSetLMotorAxis(linear_, 0, 1, c, s, 0.0);
+  dJointSetLMotorAxis(linear_, 1, 1, -s, c, 0.0);
+  dJointSetLMotorParam(linear_, dParamFMax, max_force_n_);
+  dJointSetLMotorParam(linear_, dParamFMax2, max_force_n_);
+  dJointSetLMotorParam(linear_, dParamVel, target_forward_mps_);
+  dJointSetLMotorParam(linear_, dParamVel2, 0.0);
+
+  angular_ = dJointCreateAMotor(world, group);
+  dJointAttach(angular_, body_, nullptr);
+  dJointSetAMotorMode(angular_, dAMotorUser);
+  dJointSetAMotorNumAxes(angular_, 1);
+  dJointSetAMotorAxis(angular_, 0, 1, 0.0, 0.0, 1.0);
+  dJointSetAMotorParam(angular_, dParamFMax, max_torque_nm_);
+  dJointSetAMotorParam(angular_, dParamVel, target_turn_rad_s_);
 }
 
 void RobotDrive::command(const RobotBody& body) {
   target_forward_mps_ = 0.5 * (body.left_mps + body.right_mps);
   target_turn_rad_s_ = (body.right_mps - body.left_mps) / body.axle_m;
-  if (!servo_) {
+  if (model_ == DriveModel::motor_joint) {
     dJointSetLMotorParam(linear_, dParamVel, target_forward_mps_);
     dJointSetAMotorParam(angular_, dParamVel, target_turn_rad_s_);
   }
 }
 
-void RobotDrive::apply_servo(double h_s) const {
-  if (!servo_) return;
+void RobotDrive::prepare(double h_s, bool in_contact, dWorldID world, dJointGroupID group) {
+  if (model_ == DriveModel::motor_joint) return;
+  if (model_ == DriveModel::motor_joint_in_contact && in_contact) {
+    // Motors for this sub-step only, in the group emptied with the contacts after it.
+    add_motors(world, group);
+    return;
+  }
   const dReal* q = dBodyGetQuaternion(body_);
   // Heading unit vector of a rotation about z: (cos, sin) of the yaw, from the quaternion.
   const double c = 1.0 - 2.0 * q[3] * q[3];
@@ -96,15 +111,17 @@ double RobotDrive::speed_mps() const {
   return std::sqrt(v[0] * v[0] + v[1] * v[1]);
 }
 
-void RobotDrive::flatten() const {
-  const dReal* p = dBodyGetPosition(body_);
-  if (p[2] != 0.0) dBodySetPosition(body_, p[0], p[1], 0.0);
-  const dReal* v = dBodyGetLinearVel(body_);
-  if (v[2] != 0.0) dBodySetLinearVel(body_, v[0], v[1], 0.0);
-  const dReal* w = dBodyGetAngularVel(body_);
-  if (w[0] != 0.0 || w[1] != 0.0) dBodySetAngularVel(body_, 0.0, 0.0, w[2]);
-  const dReal* q = dBodyGetQuaternion(body_);
-  if (q[1] != 0.0 || q[2] != 0.0) set_yaw(body_, yaw_of(body_));
+void RobotDrive::flatten() const { flatten_body(body_); }
+
+void flatten_body(dBodyID body) {
+  const dReal* p = dBodyGetPosition(body);
+  if (p[2] != 0.0) dBodySetPosition(body, p[0], p[1], 0.0);
+  const dReal* v = dBodyGetLinearVel(body);
+  if (v[2] != 0.0) dBodySetLinearVel(body, v[0], v[1], 0.0);
+  const dReal* w = dBodyGetAngularVel(body);
+  if (w[0] != 0.0 || w[1] != 0.0) dBodySetAngularVel(body, 0.0, 0.0, w[2]);
+  const dReal* q = dBodyGetQuaternion(body);
+  if (q[1] != 0.0 || q[2] != 0.0) set_yaw(body, yaw_of(body));
 }
 
 }  // namespace swarmnet::ode

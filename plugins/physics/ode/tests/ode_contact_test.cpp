@@ -107,6 +107,22 @@ TEST(OdeContact, DenseSwarmOverlapShrinksWithTheSubstep) {
   expect_dense_swarm_stays_apart(0.002, 300);
 }
 
+// Two equal robots driving into each other at 0.3 m/s push with the same traction: they stop at
+// contact and stay there, neither gaining ground.
+TEST(OdeContact, EqualRobotsPushingHeadOnStall) {
+  const Arena arena = open_arena(10.0, 5.0);
+  std::vector<RobotBody> bodies = {robot_at(4.0, 2.5, 0.0), robot_at(6.0, 2.5, std::numbers::pi)};
+  auto physics = make_physics(arena, bodies);
+  for (RobotBody& body : bodies) body.left_mps = body.right_mps = 0.3;
+  for (int i = 0; i < 50; ++i) physics->step(0.1, bodies);
+  const double left_x = bodies[0].position.x();
+  for (int i = 0; i < 50; ++i) physics->step(0.1, bodies);
+  EXPECT_NEAR(bodies[0].position.x(), left_x, 1e-6);
+  EXPECT_NEAR(bodies[0].position.x() + bodies[1].position.x(), 10.0, 1e-6);  // the middle
+  EXPECT_NEAR(bodies[1].position.x() - bodies[0].position.x(), 0.17, kMaxPenetrationM);
+  EXPECT_NEAR(physics->velocity(0).norm(), 0.0, 1e-6);
+}
+
 TEST(OdeContact, ProximityRaysSeeWallsObstaclesAndRobots) {
   Arena arena = open_arena(10.0, 10.0);
   arena.obstacles.push_back(Rect{5.0, 8.0, 6.0, 9.0});
