@@ -25,7 +25,8 @@ class Physics : public Plugin {
 
   // Moves every body by its wheel speeds for dt_s seconds and resolves collisions with walls,
   // obstacles and other robots. After it returns no two bodies overlap and no body leaves the
-  // arena or enters an obstacle.
+  // arena or enters an obstacle; an engine with soft contacts (ode) may leave an overlap of a
+  // bounded depth, which it documents (docs/physics-ode.md: about closing speed x sub-step).
   virtual void step(double dt_s, std::span<RobotBody> bodies) = 0;
 
   // Proximity ring of `robot`: ray k points at heading + 2*pi*k/rays.size(); each entry receives
