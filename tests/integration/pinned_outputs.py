@@ -28,6 +28,8 @@ RUNS = {
                              ["--set", "duration_s=20", "--set", "sync=pipelined"]),
     "wireless": ("configs/wireless.yaml", ["--set", "duration_s=10"]),
     "aodv": ("configs/aodv.yaml", ["--set", "duration_s=10"]),
+    # ODE physics (Debian's libode 0.16.2): a change of the plugin or of the library shows here.
+    "ode": ("configs/ode.yaml", ["--set", "duration_s=10"]),
 }
 FILES = ["packets.csv", "positions.bin", "mobility.ns2", "traffic.csv", "summary.json"]
 # Fields of summary.json that measure the machine, not the simulation.

@@ -190,6 +190,29 @@ TEST(ScenarioLoader, SetCreatesMissingKeysAndReplacesWholeValues) {
   EXPECT_EQ(s.output.dir, fs::path("elsewhere"));
 }
 
+// arena.objects: shapes, poses and masses as written, unstated keys at their defaults.
+TEST(ScenarioLoader, ReadsMovableObjects) {
+  const Scenario s = load_with(
+      kMinimal,
+      {"arena.objects=[{shape: box, x_m: 5, y_m: 6, size_x_m: 0.4, size_y_m: 0.2, "
+       "heading_rad: 0.5, mass_kg: 2}, {shape: cylinder, x_m: 8, y_m: 9, radius_m: 0.1}]"});
+  ASSERT_EQ(s.arena.objects.size(), 2u);
+  const ArenaObject& box = s.arena.objects[0];
+  EXPECT_EQ(box.shape, ArenaObject::Shape::box);
+  EXPECT_EQ(box.position, Vec2(5, 6));
+  EXPECT_EQ(box.size_x_m, 0.4);
+  EXPECT_EQ(box.size_y_m, 0.2);
+  EXPECT_EQ(box.heading_rad, 0.5);
+  EXPECT_EQ(box.mass_kg, 2.0);
+  const ArenaObject& cylinder = s.arena.objects[1];
+  EXPECT_EQ(cylinder.shape, ArenaObject::Shape::cylinder);
+  EXPECT_EQ(cylinder.position, Vec2(8, 9));
+  EXPECT_EQ(cylinder.radius_m, 0.1);
+  EXPECT_EQ(cylinder.heading_rad, 0.0);
+  EXPECT_EQ(cylinder.mass_kg, 0.5);
+  EXPECT_TRUE(load_with(kMinimal, {}).arena.objects.empty());
+}
+
 TEST(ScenarioLoader, LaterOverridesWin) {
   const Scenario s = load_with(kMinimal, {"robots.count=5", "robots.count=7"});
   EXPECT_EQ(s.robots.count, 7u);

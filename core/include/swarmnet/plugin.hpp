@@ -26,7 +26,8 @@
 namespace swarmnet {
 
 // Bumped whenever a change to any SDK header changes the layout or the virtual tables that a
-// plugin and the kernel share.
+// plugin and the kernel share. 3: RobotContext's ports, axle and arena; Physics::object_poses and
+// Arena::objects.
 inline constexpr std::uint32_t kAbiVersion = 3;
 
 enum class PluginKind : std::uint8_t { physics, propagation, mac, routing, controller };

@@ -10,5 +10,6 @@ inline constexpr const char* kPacketTraceFile = "packets.csv";
 inline constexpr const char* kMobilityTraceFile = "mobility.ns2";
 inline constexpr const char* kPositionsTraceFile = "positions.bin";  // outputs/positions_trace.hpp
 inline constexpr const char* kTrafficScheduleFile = "traffic.csv";
+inline constexpr const char* kObjectTraceFile = "objects.csv";  // outputs/object_trace.hpp
 
 }  // namespace swarmnet

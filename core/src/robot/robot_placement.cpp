@@ -69,6 +69,28 @@ bool overlaps_obstacle(const Arena& arena, const Vec2& p, double radius_m) {
   });
 }
 
+// A disc overlaps a movable object: a cylinder's disc, or a box turned by its heading (the disc's
+// centre taken into the box's frame, then the nearest point of the box).
+bool overlaps_object(const ArenaObject& object, const Vec2& p, double radius_m) {
+  const Vec2 offset = p - object.position;
+  if (object.shape == ArenaObject::Shape::cylinder) {
+    const double contact_m = object.radius_m + radius_m;
+    return offset.squaredNorm() < contact_m * contact_m;
+  }
+  const double c = std::cos(object.heading_rad);
+  const double s = std::sin(object.heading_rad);
+  const Vec2 local(c * offset.x() + s * offset.y(), -s * offset.x() + c * offset.y());
+  const Vec2 nearest(std::clamp(local.x(), -0.5 * object.size_x_m, 0.5 * object.size_x_m),
+                     std::clamp(local.y(), -0.5 * object.size_y_m, 0.5 * object.size_y_m));
+  return (local - nearest).squaredNorm() < radius_m * radius_m;
+}
+
+bool overlaps_any_object(const Arena& arena, const Vec2& p, double radius_m) {
+  return std::any_of(arena.objects.begin(), arena.objects.end(), [&](const ArenaObject& object) {
+    return overlaps_object(object, p, radius_m);
+  });
+}
+
 std::string describe(const Rect& rect) {
   std::ostringstream text;
   text << "[" << rect.x_min_m << ", " << rect.x_max_m << "] x [" << rect.y_min_m << ", "
@@ -107,6 +129,7 @@ std::vector<RobotBody> place_robots(const Arena& arena, const Rect& region, std:
                         random.uniform(sample.y_min_m, sample.y_max_m));
       const double heading_rad = random.uniform(-std::numbers::pi, std::numbers::pi);
       if (outside_arena(arena, centre, radius_m) || overlaps_obstacle(arena, centre, radius_m) ||
+          overlaps_any_object(arena, centre, radius_m) ||
           grid.touches_any(centre, 2.0 * radius_m)) {
         continue;
       }
@@ -122,7 +145,8 @@ std::vector<RobotBody> place_robots(const Arena& arena, const Rect& region, std:
       text << "could place only " << placed << " of " << count << " robots (radius " << radius_m
            << " m) in the placement region " << describe(region) << ": robot " << placed
            << " found no free spot in " << kPlacementAttemptsPerRobot
-           << " random attempts (robots may not overlap each other, the walls or obstacles). "
+           << " random attempts (robots may not overlap each other, the walls, obstacles or "
+              "objects). "
            << "Use a larger robots.placement region or arena, or fewer robots.";
       throw std::runtime_error(text.str());
     }

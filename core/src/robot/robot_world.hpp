@@ -44,6 +44,11 @@ class RobotWorld {
   }
   [[nodiscard]] double step_s() const { return state_.step_s; }
   [[nodiscard]] std::span<const RobotBody> bodies() const { return state_.bodies; }
+  // Poses of the arena's movable objects, as the physics engine reports them (empty when there
+  // are none).
+  [[nodiscard]] std::span<const ObjectPose> object_poses() const {
+    return physics_->object_poses();
+  }
   // The proximity readings robot `robot`'s controllers see on the next step.
   [[nodiscard]] std::span<const double> proximity(RobotId robot) const;
 

@@ -8,6 +8,7 @@
 
 #include "plugin/plugin_catalog.hpp"
 #include "scenario/free_area.hpp"
+#include "swarmnet/arena.hpp"
 
 namespace swarmnet {
 
@@ -114,6 +115,50 @@ void check_steps(const YAML::Node& tree, const ScenarioChecker& checker, Problem
   }
 }
 
+// Movable objects: a box with both sides, a cylinder with a radius, lying inside the arena.
+void check_objects(const YAML::Node& tree, const ScenarioChecker& checker, double width_m,
+                   double height_m, ProblemList& problems) {
+  const KeyPath objects_path({"arena", "objects"});
+  const auto objects_node = at(tree, objects_path);
+  if (!objects_node) return;
+  for (std::size_t i = 0; i < objects_node->size(); ++i) {
+    const YAML::Node node = (*objects_node)[i];
+    const KeyPath path = objects_path / i;
+    const YAML::Mark mark = checker.mark_of(path);
+    if (!node["shape"] || !node["x_m"] || !node["y_m"]) continue;  // already reported
+    ArenaObject object;
+    object.position = Vec2(node["x_m"].as<double>(), node["y_m"].as<double>());
+    object.heading_rad = node["heading_rad"].as<double>();
+    if (node["shape"].as<std::string>() == "box") {
+      object.size_x_m = node["size_x_m"].as<double>();
+      object.size_y_m = node["size_y_m"].as<double>();
+      if (!(object.size_x_m > 0.0) || !(object.size_y_m > 0.0)) {
+        problems.add(path, mark,
+                     "a box of " + approx(object.size_x_m) + " x " + approx(object.size_y_m) +
+                         " m has no area",
+                     "a box with size_x_m > 0 and size_y_m > 0");
+        continue;
+      }
+    } else {
+      object.shape = ArenaObject::Shape::cylinder;
+      object.radius_m = node["radius_m"].as<double>();
+      if (!(object.radius_m > 0.0)) {
+        problems.add(path, mark, "a cylinder of radius " + approx(object.radius_m) + " m",
+                     "a cylinder with radius_m > 0");
+        continue;
+      }
+    }
+    const Rect bounds = object.bounds();
+    if (bounds.x_min_m < 0.0 || bounds.y_min_m < 0.0 || bounds.x_max_m > width_m ||
+        bounds.y_max_m > height_m) {
+      problems.add(path, mark,
+                   "the object covers " + describe(bounds) + ", reaching outside the arena [0, " +
+                       approx(width_m) + "] x [0, " + approx(height_m) + "]",
+                   "an object inside the arena");
+    }
+  }
+}
+
 }  // namespace
 
 void check_consistency(YAML::Node& tree, const ScenarioChecker& checker, ProblemList& problems) {
@@ -141,6 +186,8 @@ void check_consistency(YAML::Node& tree, const ScenarioChecker& checker, Problem
       }
     }
   }
+
+  check_objects(tree, checker, *width, *height, problems);
 
   // The placement region: inside the arena, or the whole arena when not given.
   const KeyPath placement_path({"robots", "placement"});

@@ -77,6 +77,19 @@ Rect rect_from(const YAML::Node& node) {
               node["x_max_m"].as<double>(), node["y_max_m"].as<double>()};
 }
 
+ArenaObject object_from(const YAML::Node& node) {
+  ArenaObject object;
+  object.shape = node["shape"].as<std::string>() == "cylinder" ? ArenaObject::Shape::cylinder
+                                                               : ArenaObject::Shape::box;
+  object.position = Vec2(node["x_m"].as<double>(), node["y_m"].as<double>());
+  object.heading_rad = node["heading_rad"].as<double>();
+  object.size_x_m = node["size_x_m"].as<double>();
+  object.size_y_m = node["size_y_m"].as<double>();
+  object.radius_m = node["radius_m"].as<double>();
+  object.mass_kg = node["mass_kg"].as<double>();
+  return object;
+}
+
 // Reads the checked tree, which holds every key, into a Scenario.
 Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>& plugins) {
   const auto plugin = [&plugins](const std::string& path) { return plugins.at(path); };
@@ -98,6 +111,7 @@ Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>
   s.arena.width_m = arena["width_m"].as<double>();
   s.arena.height_m = arena["height_m"].as<double>();
   for (const auto& obstacle : arena["obstacles"]) s.arena.obstacles.push_back(rect_from(obstacle));
+  for (const auto& node : arena["objects"]) s.arena.objects.push_back(object_from(node));
 
   const YAML::Node robots = tree["robots"];
   s.robots.count = robots["count"].as<std::uint32_t>();

@@ -141,6 +141,22 @@ const KeySpec& scenario_schema() {
       real_key("height_m", "m", "Extent along y.").above(0).need(),
       map_list_key("obstacles", "Rectangular obstacles, inside the arena.", rect_keys("obstacle"))
           .one_line().defaults("[]"),
+      map_list_key("objects", "Movable objects on the floor that robots can push: boxes and "
+                              "upright cylinders, inside the arena. Need a physics engine with "
+                              "dynamics (ode); kinematic2d refuses them.", {
+        choice_key("shape", {"box", "cylinder"}, "What the object is.").need(),
+        real_key("x_m", "m", "Centre, x.").need(),
+        real_key("y_m", "m", "Centre, y.").need(),
+        real_key("heading_rad", "rad", "box: direction of its size_x_m side, from +x.")
+            .defaults("0"),
+        real_key("size_x_m", "m", "box: side along its heading; positive for a box.")
+            .at_least(0).defaults("0"),
+        real_key("size_y_m", "m", "box: side across its heading; positive for a box.")
+            .at_least(0).defaults("0"),
+        real_key("radius_m", "m", "cylinder: radius; positive for a cylinder.")
+            .at_least(0).defaults("0"),
+        real_key("mass_kg", "kg", "Mass.").above(0).defaults("0.5"),
+      }).one_line().defaults("[]"),
     }),
     map_key("robots", "The swarm: identical differential-drive discs.", {
       integer_key("count", "Number of robots.").between(1, 100000).need(),

@@ -17,6 +17,7 @@
 #include "display/progress_line.hpp"
 #include "outputs/atomic_file.hpp"
 #include "outputs/mobility_trace.hpp"
+#include "outputs/object_trace.hpp"
 #include "outputs/output_files.hpp"
 #include "outputs/positions_trace.hpp"
 #include "outputs/run_directory.hpp"
@@ -111,8 +112,8 @@ struct RobotLoopCost {
 
 NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, StepChannel& channel,
                                MobilityTraceWriter* mobility, PositionsTraceWriter* positions,
-                               TrafficScheduleWriter* traffic, ProgressLine& progress,
-                               RobotLoopCost& cost) {
+                               ObjectTraceWriter* objects, TrafficScheduleWriter* traffic,
+                               ProgressLine& progress, RobotLoopCost& cost) {
   const std::uint64_t steps = scenario.step_count();
   const std::uint64_t lag = delivery_lag(scenario.sync);
   StepBatch batch;
@@ -145,6 +146,7 @@ NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, Step
     for (std::size_t i = 0; i < bodies.size(); ++i) batch.positions[i] = bodies[i].position;
     if (mobility != nullptr) mobility->sample(step, batch.positions);
     if (positions != nullptr) positions->sample(batch.positions);
+    if (objects != nullptr) objects->sample(step, world.object_poses());
 
     batch.messages.clear();
     world.step(*deliveries, batch.messages);
@@ -201,6 +203,13 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
       positions.emplace(positions_file->stream(), scenario.robots.count, scenario.step_count(),
                         from_seconds(scenario.step_s));
     }
+    // The movable objects' poses, written with the robots' positions.
+    std::optional<AtomicFile> objects_file;
+    std::optional<ObjectTraceWriter> objects;
+    if (scenario.output.mobility_trace && !scenario.arena.objects.empty()) {
+      objects_file.emplace(outcome.dir / kObjectTraceFile);
+      objects.emplace(objects_file->stream(), from_seconds(scenario.step_s));
+    }
     std::optional<AtomicFile> traffic_file;
     std::optional<TrafficScheduleWriter> traffic;
     if (scenario.output.traffic_schedule) {
@@ -225,8 +234,8 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
         handshake(scenario, outcome.dir, channel);
         link->connected();
         report = drive_robot_half(scenario, world, channel, mobility ? &*mobility : nullptr,
-                                  positions ? &*positions : nullptr, traffic ? &*traffic : nullptr,
-                                  progress, cost);
+                                  positions ? &*positions : nullptr, objects ? &*objects : nullptr,
+                                  traffic ? &*traffic : nullptr, progress, cost);
       } catch (const PeerLost& error) {
         robot_error = error.what();
         lost_peer = true;
@@ -259,6 +268,7 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
 
     if (mobility_file) mobility_file->commit();
     if (positions_file) positions_file->commit();
+    if (objects_file) objects_file->commit();
     if (traffic_file) traffic_file->commit();
 
     SummaryInputs summary;

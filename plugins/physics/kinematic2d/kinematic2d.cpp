@@ -1,5 +1,8 @@
 #include "kinematic2d.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include "drive_kinematics.hpp"
 
 namespace swarmnet::kinematic2d {
@@ -27,7 +30,8 @@ PluginInfo Kinematic2d::info() {
       "ascending index order, so runs are deterministic.\n"
       "Proximity: each ray is intersected with the walls, obstacles (slab test) and the discs of "
       "robots within range (from the grid); the reading is the distance from the body's surface to "
-      "the first hit, or the range when there is none.",
+      "the first hit, or the range when there is none.\n"
+      "Movable objects (arena.objects) are refused: kinematics cannot push them.",
       {integer_param("collision_iterations", 4, "",
                      "projection passes per step before robots still in violation are returned "
                      "to their previous position",
@@ -38,6 +42,14 @@ Kinematic2d::Kinematic2d(const PluginArgs& args)
     : collision_iterations_(static_cast<int>(args.params.integer("collision_iterations"))) {}
 
 void Kinematic2d::setup(const Arena& arena, std::span<const RobotBody> bodies) {
+  // Kinematics cannot push anything: an object would have to be a static obstacle, which is not
+  // what the scenario says. Refused rather than silently frozen.
+  if (!arena.objects.empty()) {
+    throw std::invalid_argument(
+        "kinematic2d: the arena has " + std::to_string(arena.objects.size()) +
+        " movable object(s) (arena.objects), which kinematic2d cannot move; use a physics "
+        "engine with dynamics (physics.plugin: ode) or remove arena.objects");
+  }
   arena_ = arena;
   resolver_.setup(arena_, bodies, collision_iterations_);
 }
