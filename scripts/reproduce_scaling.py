@@ -13,7 +13,8 @@ count) with `swarmnet sweep`, which is resumable, then writes into the sweep's d
   python3 scripts/reproduce_scaling.py --results runs/sweeps/paper-scaling/results.csv  # draw only
 
 Durations differ between sizes (the sweep file says which), so sizes are compared per simulated
-second. Needs matplotlib (Debian: python3-matplotlib).
+second. Needs matplotlib (Debian: python3-matplotlib); run under a python3 without it, it restarts
+itself under /usr/bin/python3 when that one has it (figure_python.py).
 """
 import argparse
 import csv
@@ -22,6 +23,7 @@ import subprocess
 import sys
 from collections import defaultdict
 
+from figure_python import require_matplotlib
 from reproduce_overhead import TABLE_I_NS2, TABLE_II_NS3
 
 # The study's CPU seconds for 200 simulated seconds, integrated runs: (robot simulator, network
@@ -122,6 +124,7 @@ def figure(means, out):
 
 
 def main():
+    require_matplotlib()  # before the sweep: the figure at the end needs it
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default="build", help="build directory holding bin/swarmnet")
     parser.add_argument("--sweep", default="configs/sweeps/paper-scaling.yaml")
