@@ -41,13 +41,18 @@ def scenarios():
 
 
 def run(binary, scenario, out, sim_s, transport):
+    """Runs one scenario; returns None, or the refusal of a scenario the build cannot read (exit
+    status 2: e.g. a plugin or key newer than the build), which is reported, not compared."""
     shutil.rmtree(out, ignore_errors=True)
     command = [binary, "run", str(scenario), "--quiet", "--transport", transport, "--out",
                str(out), "--set", f"duration_s={sim_s}"]
     done = subprocess.run(command, cwd=SOURCE, capture_output=True, text=True, check=False)
+    if done.returncode == 2:
+        return done.stderr.strip().splitlines()[0] if done.stderr.strip() else "refused"
     if done.returncode != 0:
         sys.exit(f"compare_outputs: {' '.join(command)} failed ({done.returncode}):\n"
                  f"{done.stdout}{done.stderr}")
+    return None
 
 
 def main():
@@ -60,14 +65,20 @@ def main():
     args = parser.parse_args()
     pinned = load_pinned_outputs()
     rows = []
+    refused = []
     with tempfile.TemporaryDirectory(prefix="swarmnet-outputs-") as work:
         for scenario in scenarios():
             hashes = {}
             for label, binary in (("before", args.before), ("after", args.after)):
                 out = pathlib.Path(work) / f"{scenario.stem}-{label}"
-                run(binary, scenario, out, args.sim_s, args.transport)
+                refusal = run(binary, scenario, out, args.sim_s, args.transport)
+                if refusal is not None:
+                    refused.append((str(scenario.relative_to(SOURCE)), label, refusal))
+                    break
                 hashes[label] = {name: pinned.digest(out / name) for name in pinned.FILES
                                  if (out / name).exists()}
+            if len(hashes) < 2:
+                continue
             for name in pinned.FILES:
                 before, after = hashes["before"].get(name), hashes["after"].get(name)
                 rows.append({"scenario": str(scenario.relative_to(SOURCE)), "file": name,
@@ -78,10 +89,13 @@ def main():
         print(f"| {row['scenario']} | {row['file']} | {'yes' if row['same'] else 'NO'} |")
     if args.json:
         pathlib.Path(args.json).write_text(json.dumps(rows, indent=2) + "\n")
+    for scenario, label, refusal in refused:
+        print(f"compare_outputs: not compared: the {label} build cannot read {scenario}: {refusal}")
     differ = [row for row in rows if not row["same"]]
     print(f"compare_outputs: {len(rows) - len(differ)} of {len(rows)} outputs identical "
           f"({args.sim_s:g} simulated s, {args.transport})")
-    return 1 if differ else 0
+    # A scenario the changed build refuses is a regression; one only the reference refuses is new.
+    return 1 if differ or any(label == "after" for _, label, _ in refused) else 0
 
 
 if __name__ == "__main__":
