@@ -12,6 +12,7 @@
 #include "swarmnet/physics.hpp"
 #include "swarmnet/plugin.hpp"
 #include "swarmnet/propagation.hpp"
+#include "swarmnet/proximity_ring.hpp"
 #include "swarmnet/random.hpp"
 #include "swarmnet/robot_body.hpp"
 #include "swarmnet/routing.hpp"

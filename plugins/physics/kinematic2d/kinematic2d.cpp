@@ -62,7 +62,7 @@ void Kinematic2d::step(double dt_s, std::span<RobotBody> bodies) {
 
 void Kinematic2d::sense_proximity(std::span<const RobotBody> bodies, std::size_t robot,
                                   double range_m, std::span<double> rays) const {
-  caster_.cast(arena_, resolver_.grid(), resolver_.max_radius_m(), bodies, robot, range_m, rays);
+  proximity_.cast(arena_, resolver_.grid(), resolver_.max_radius_m(), bodies, robot, range_m, rays);
 }
 
 }  // namespace swarmnet::kinematic2d

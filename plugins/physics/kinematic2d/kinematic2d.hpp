@@ -5,8 +5,8 @@
 #include <span>
 
 #include "collision_resolver.hpp"
-#include "proximity_caster.hpp"
 #include "swarmnet/physics.hpp"
+#include "swarmnet/proximity_ring.hpp"
 
 namespace swarmnet::kinematic2d {
 
@@ -24,7 +24,7 @@ class Kinematic2d final : public Physics {
   int collision_iterations_;
   Arena arena_;
   CollisionResolver resolver_;
-  ProximityCaster caster_;
+  ProximityRing proximity_;
 };
 
 }  // namespace swarmnet::kinematic2d

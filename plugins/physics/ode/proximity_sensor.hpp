@@ -1,10 +1,9 @@
 // The proximity ring, answered against the same geometry ODE collides: the arena's walls,
 // the obstacles and the other robots' discs.
 //
-// Rays are cast analytically against the same shapes rather than as ODE ray geoms (one space query
-// and one geom per ray, moved for every robot): other robots come from the SDK's uniform grid and
-// only the rays within a neighbour's angular width are tested against it, so a ring costs
-// O(rays + obstacles * rays + robots in range), as in kinematic2d.
+// Rays are cast analytically against the same shapes (the SDK's ProximityRing, as kinematic2d
+// does) rather than as ODE ray geoms (one space query and one geom per ray, moved for every
+// robot).
 #pragma once
 
 #include <cstddef>
@@ -13,6 +12,7 @@
 
 #include "swarmnet/arena.hpp"
 #include "swarmnet/physics.hpp"
+#include "swarmnet/proximity_ring.hpp"
 #include "swarmnet/robot_body.hpp"
 #include "swarmnet/spatial_grid.hpp"
 
@@ -40,15 +40,7 @@ class ProximitySensor {
   SpatialGrid grid_;
   std::vector<Vec2> points_;
   std::vector<ObjectPose> object_poses_;
-  mutable std::vector<Vec2> offsets_;     // ray directions at heading 0
-  mutable std::vector<Vec2> directions_;  // turned by the current robot's heading
+  ProximityRing ring_;
 };
-
-// Distances along unit direction `u` from `origin`; infinity for a miss.
-double ray_to_walls(const Arena& arena, const Vec2& origin, const Vec2& u);
-double ray_to_rect(const Rect& rect, const Vec2& origin, const Vec2& u);
-double ray_to_disc(const Vec2& centre, double radius_m, const Vec2& origin, const Vec2& u);
-double ray_to_object(const ArenaObject& shape, const ObjectPose& pose, const Vec2& origin,
-                     const Vec2& u);
 
 }  // namespace swarmnet::ode
