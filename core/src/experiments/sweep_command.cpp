@@ -15,6 +15,7 @@
 
 #include "coupling/process_spawn.hpp"
 #include "coupling/stop_signal.hpp"
+#include "experiments/slurm_sweep.hpp"
 #include "experiments/sweep_file.hpp"
 #include "experiments/sweep_lock.hpp"
 #include "experiments/sweep_plan.hpp"
@@ -130,6 +131,8 @@ int sweep_command(const SweepOptions& options) {
     return kExitBadInput;
   }
   const std::filesystem::path out = sweep_directory(spec, options.file, options.out);
+  if (options.action == SweepAction::kStatus) return sweep_status(runs, out);
+  if (options.action == SweepAction::kCollect) return sweep_collect(spec, runs, out);
   if (const auto problems = validate_runs(spec, runs); !problems.empty()) {
     std::fprintf(stderr, "swarmnet: error: the sweep %s gives invalid scenarios:\n",
                  options.file.string().c_str());
@@ -142,6 +145,14 @@ int sweep_command(const SweepOptions& options) {
                 spec.seeds.size(), spec.base.string().c_str(), out.string().c_str());
     return 0;
   }
+  if (options.action == SweepAction::kSlurmSubmit) {
+    SlurmJobSettings settings = options.slurm;
+    if (settings.swarmnet.empty()) settings.swarmnet = self_executable();
+    settings.swarmnet = std::filesystem::absolute(settings.swarmnet).lexically_normal();
+    return slurm_submit_sweep(options.file, spec, runs, out,
+                              "swarmnet-" + options.file.stem().string(), settings);
+  }
+
   const std::filesystem::path runs_dir = out / "runs";
   std::error_code ec;
   std::filesystem::create_directories(runs_dir, ec);
