@@ -77,6 +77,17 @@ TEST(SlurmScript, TheTaskRunsTheRunOfItsIndexWithItsArguments) {
       run_captured({"env", "SLURM_ARRAY_TASK_ID=7", "bash", script.string()});
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.errors.find("no run for array index 7"), std::string::npos) << missing.errors;
+
+  // A swarmnet path the node does not have: said in the task's Slurm log, before anything runs.
+  settings.swarmnet = dir.path() / "not-installed" / "swarmnet";
+  std::ofstream(script) << job_array_script(sweep_dir, "n", 1, 2, settings);
+  const CapturedCommand absent =
+      run_captured({"env", "SLURM_ARRAY_TASK_ID=0", "bash", script.string()});
+  EXPECT_EQ(absent.exit_code, 2);
+  EXPECT_NE(absent.errors.find(settings.swarmnet.string() + " is not an executable on "),
+            std::string::npos)
+      << absent.errors;
+  EXPECT_FALSE(std::filesystem::exists(sweep_dir / "runs" / "a_seed-1"));
 }
 
 TEST(SlurmStatus, ReadsSqueueSacctAndScontrol) {
