@@ -74,6 +74,9 @@ class SlurmCluster {
            " s (sinfo: " + state + ")" + tail(dir_ / "slurmctld.log") + tail(dir_ / "slurmd.log");
   }
 
+  // slurm.conf's MaxArraySize (set before start()): a small one makes a sweep several arrays.
+  void set_max_array_size(std::size_t size) { max_array_size_ = size; }
+
   [[nodiscard]] std::filesystem::path config() const { return dir_ / "slurm.conf"; }
   [[nodiscard]] const std::filesystem::path& directory() const { return dir_; }
 
@@ -226,7 +229,8 @@ class SlurmCluster {
          << "SlurmctldPidFile=" << d << "/slurmctld.pid\nSlurmdPidFile=" << d << "/slurmd.pid\n"
          << "SlurmctldLogFile=" << d << "/slurmctld.log\nSlurmdLogFile=" << d << "/slurmd.log\n"
          << "NodeName=" << host << " NodeAddr=127.0.0.1 CPUs=" << cpus << " State=UNKNOWN\n"
-         << "PartitionName=debug Nodes=ALL Default=YES MaxTime=INFINITE State=UP\n";
+         << "PartitionName=debug Nodes=ALL Default=YES MaxTime=INFINITE State=UP\n"
+         << "MaxArraySize=" << max_array_size_ << "\n";
     return conf ? "" : "cannot write " + config().string();
   }
 
@@ -253,6 +257,7 @@ class SlurmCluster {
   }
 
   std::filesystem::path dir_;
+  std::size_t max_array_size_ = 1001;  // Slurm's default
 };
 
 }  // namespace swarmnet::testing

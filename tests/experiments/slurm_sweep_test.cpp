@@ -27,6 +27,9 @@ class SlurmSweep : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     cluster_ = new SlurmCluster();
+    // At most 4 tasks per array: the 6-run sweep becomes two arrays, as a 1500-run study would
+    // on a cluster with Slurm's default of 1001.
+    cluster_->set_max_array_size(4);
     why_not_ = cluster_->start();
   }
   static void TearDownTestSuite() {
@@ -123,13 +126,19 @@ TEST_F(SlurmSweep, SubmitsStatusCollectsAndResubmitsOnlyTheFailedRun) {
   ASSERT_TRUE(std::regex_search(submitted.output, match, std::regex("(?:^|\\n)([0-9]+)\\n")))
       << submitted.output;
   const std::string first_job = match[1];
-  EXPECT_NE(submitted.output.find("6 submitted (0 failed before) as Slurm job array " + first_job),
+  const std::string rest = match.suffix();
+  ASSERT_TRUE(std::regex_search(rest, match, std::regex("^([0-9]+)\\n"))) << submitted.output;
+  const std::string second_job = match[1];
+  EXPECT_NE(submitted.output.find("6 submitted (0 failed before) as Slurm job arrays " + first_job +
+                                  " (4 runs), " + second_job +
+                                  " (2 runs) (this cluster's MaxArraySize is 4; at most 2 at a "
+                                  "time in each)"),
             std::string::npos)
       << submitted.output;
 
   // The script: one array, throttled, and no path outside the sweep directory and swarmnet's.
   const std::string script = read_file(out / "slurm" / "submit-1.sh");
-  EXPECT_NE(script.find("#SBATCH --array=0-5%2\n"), std::string::npos) << script;
+  EXPECT_NE(script.find("#SBATCH --array=0-3%2\n"), std::string::npos) << script;
   const std::filesystem::path bin = std::filesystem::canonical(swarmnet_binary());
   std::smatch path;
   for (auto it = script.cbegin();
@@ -142,8 +151,10 @@ TEST_F(SlurmSweep, SubmitsStatusCollectsAndResubmitsOnlyTheFailedRun) {
         << script;
   }
   EXPECT_EQ(read_file(out / "slurm" / "submit-1.tasks"),
-            "count-5_seed-1\ncount-5_seed-2\ncount-8_seed-1\ncount-8_seed-2\ncount-10_seed-1\n"
-            "count-10_seed-2\n");
+            "count-5_seed-1\ncount-5_seed-2\ncount-8_seed-1\ncount-8_seed-2\n");
+  EXPECT_EQ(read_file(out / "slurm" / "submit-2.tasks"), "count-10_seed-1\ncount-10_seed-2\n");
+  EXPECT_NE(read_file(out / "slurm" / "submit-2.sh").find("#SBATCH --array=0-1%2\n"),
+            std::string::npos);
 
   const std::string status_command = on_slurm + " --status";
   std::string status = wait_for_sweep(status_command, std::chrono::seconds(120));
@@ -178,15 +189,14 @@ TEST_F(SlurmSweep, SubmitsStatusCollectsAndResubmitsOnlyTheFailedRun) {
   ASSERT_EQ(submitted.exit_code, 0) << submitted.output;
   ASSERT_TRUE(std::regex_search(submitted.output, match, std::regex("(?:^|\\n)([0-9]+)\\n")))
       << submitted.output;
-  const std::string second_job = match[1];
-  EXPECT_NE(second_job, first_job);
+  const std::string third_job = match[1];
   EXPECT_NE(submitted.output.find("5 done, 0 queued or running before, 1 submitted (1 failed "
                                   "before) as Slurm job array " +
-                                  second_job),
+                                  third_job + " (submission 3, at most 2 at a time)"),
             std::string::npos)
       << submitted.output;
-  EXPECT_EQ(read_file(out / "slurm" / "submit-2.tasks"), kBroken + "\n");
-  EXPECT_NE(read_file(out / "slurm" / "submit-2.sh").find("#SBATCH --array=0-0%2\n"),
+  EXPECT_EQ(read_file(out / "slurm" / "submit-3.tasks"), kBroken + "\n");
+  EXPECT_NE(read_file(out / "slurm" / "submit-3.sh").find("#SBATCH --array=0-0%2\n"),
             std::string::npos);
 
   status = wait_for_sweep(status_command, std::chrono::seconds(120));

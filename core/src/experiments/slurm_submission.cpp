@@ -136,6 +136,23 @@ std::vector<SlurmSubmission> read_submissions(const std::filesystem::path& sweep
   return submissions;
 }
 
+std::size_t slurm_max_array_size() {
+  constexpr std::size_t kSlurmDefault = 1001;
+  const CapturedCommand config = run_captured({"scontrol", "show", "config"});
+  if (!config.started || config.exit_code != 0) return kSlurmDefault;
+  std::istringstream lines(config.output);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string key;
+    std::string equals;
+    std::size_t value = 0;
+    if (words >> key >> equals >> value && key == "MaxArraySize" && equals == "=" && value > 0) {
+      return value;
+    }
+  }
+  return kSlurmDefault;
+}
+
 SlurmSubmission submit_job_array(const std::filesystem::path& sweep_dir, const std::string& name,
                                  const std::vector<std::string>& run_ids,
                                  const std::vector<std::vector<std::string>>& arguments,

@@ -50,6 +50,10 @@ std::string job_array_script(const std::filesystem::path& sweep_dir, const std::
 // Throws RunError for a record or task list that cannot be read.
 std::vector<SlurmSubmission> read_submissions(const std::filesystem::path& sweep_dir);
 
+// The most tasks one job array may have on this cluster: its MaxArraySize (`scontrol show
+// config`; a task's index is below it), or Slurm's default, 1001, when scontrol does not say.
+std::size_t slurm_max_array_size();
+
 // Writes the arguments of each run, the task list and the script of the next submission, then
 // submits it with `sbatch --parsable` and records its job id. `arguments[i]` are the
 // `swarmnet run` arguments (without the executable) of `run_ids[i]`. Throws RunError naming the

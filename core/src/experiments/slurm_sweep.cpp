@@ -1,5 +1,6 @@
 #include "experiments/slurm_sweep.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -10,6 +11,7 @@
 #include "experiments/sweep_plan.hpp"
 #include "experiments/sweep_results.hpp"
 #include "outputs/atomic_file.hpp"
+#include "outputs/run_error.hpp"
 #include "session/exit_codes.hpp"
 
 namespace swarmnet {
@@ -129,18 +131,50 @@ int slurm_submit_sweep(const std::filesystem::path& sweep_file, const SweepSpec&
                    runs.size(), out.string().c_str(), done, active);
       return kExitSuccess;
     }
-    const SlurmSubmission submission = submit_job_array(out, name, ids, arguments, settings);
+    // One array when the cluster allows it; else several, each at most MaxArraySize tasks.
+    const std::size_t per_array = slurm_max_array_size();
+    std::vector<SlurmSubmission> submitted;
+    for (std::size_t first = 0; first < ids.size(); first += per_array) {
+      const std::size_t last = std::min(ids.size(), first + per_array);
+      const auto from = static_cast<std::ptrdiff_t>(first);
+      const auto to = static_cast<std::ptrdiff_t>(last);
+      try {
+        submitted.push_back(submit_job_array(
+            out, name, std::vector<std::string>(ids.begin() + from, ids.begin() + to),
+            std::vector<std::vector<std::string>>(arguments.begin() + from, arguments.begin() + to),
+            settings));
+      } catch (const std::exception& error) {
+        if (submitted.empty()) throw;
+        throw RunError(std::string(error.what()) + "; " + std::to_string(first) + " of " +
+                       std::to_string(ids.size()) +
+                       " runs were submitted before it: submit again for the rest");
+      }
+      std::printf("%s\n", submitted.back().job_id.c_str());
+    }
+    const std::string limit = settings.max_parallel > 0
+                                  ? "at most " + std::to_string(settings.max_parallel) +
+                                        " at a time" + (submitted.size() > 1 ? " in each" : "")
+                                  : "no limit on tasks at a time";
+    std::string arrays;
+    if (submitted.size() == 1) {
+      arrays = "Slurm job array " + submitted.front().job_id + " (submission " +
+               std::to_string(submitted.front().number) + ", " + limit + ")";
+    } else {
+      arrays = "Slurm job arrays";
+      for (const auto& submission : submitted) {
+        arrays += (&submission == &submitted.front() ? " " : ", ") + submission.job_id + " (" +
+                  std::to_string(submission.runs.size()) + " runs)";
+      }
+      arrays +=
+          " (this cluster's MaxArraySize is " + std::to_string(per_array) + "; " + limit + ")";
+    }
     std::fprintf(stderr,
                  "sweep: %zu runs into %s/: %zu done, %zu queued or running before, %zu "
-                 "submitted (%zu failed before) as Slurm job array %s (submission %d, %s)\n",
+                 "submitted (%zu failed before) as %s\n",
                  runs.size(), out.string().c_str(), done, active, ids.size(),
-                 count(state, RunState::kFailed), submission.job_id.c_str(), submission.number,
-                 settings.max_parallel > 0
-                     ? ("at most " + std::to_string(settings.max_parallel) + " at a time").c_str()
-                     : "no limit on tasks at a time");
+                 count(state, RunState::kFailed), arrays.c_str());
     std::fprintf(stderr, "sweep: follow it with: swarmnet sweep %s --out %s --status\n",
                  sweep_file.string().c_str(), out.string().c_str());
-    std::printf("%s\n", submission.job_id.c_str());
     return kExitSuccess;
   } catch (const std::exception& error) {
     std::fprintf(stderr, "swarmnet: error: %s\n", error.what());
