@@ -14,9 +14,10 @@
 namespace swarmnet {
 
 // Submits every run of `runs` that has no summary.json and no queued or running task of an
-// earlier submission into `sweep_dir` (made absolute) as one `sbatch --array` job; prints the
-// job id on stdout. `name` is the Slurm job name. Exit code: 0 submitted (or nothing left to
-// submit), 1 sbatch, squeue or the sweep directory failed.
+// earlier submission into `sweep_dir` (made absolute) as one `sbatch --array` job (several
+// when they are more than the cluster's MaxArraySize); prints each job id on stdout. `name` is the
+// Slurm job name. Exit code: 0 submitted (or nothing left to submit), 1 sbatch, squeue or the sweep
+// directory failed.
 int slurm_submit_sweep(const std::filesystem::path& sweep_file, const SweepSpec& spec,
                        const std::vector<SweepRun>& runs, const std::filesystem::path& sweep_dir,
                        const std::string& name, const SlurmJobSettings& settings);
