@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -251,8 +252,53 @@ static int run_main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   sweep->add_option("--out", sweep_out,
                     "sweep directory (default: the file's out, else runs/sweeps/NAME)");
-  sweep->add_flag("--check", sweep_options.validate_only,
-                  "validate the sweep and every scenario it expands to, run nothing");
+  auto* sweep_check =
+      sweep->add_flag("--check", sweep_options.validate_only,
+                      "validate the sweep and every scenario it expands to, run nothing");
+  bool sweep_slurm = false;
+  bool sweep_status = false;
+  bool sweep_collect = false;
+  std::string sweep_swarmnet;
+  auto* slurm_flag = sweep->add_flag(
+      "--slurm", sweep_slurm,
+      "submit the unfinished runs to Slurm as one job array (again: only what is missing or "
+      "failed); prints the job id");
+  auto* status_flag =
+      sweep->add_flag("--status", sweep_status,
+                      "show done, running, pending and failed runs (run directories, Slurm)");
+  auto* collect_flag =
+      sweep->add_flag("--collect", sweep_collect,
+                      "write results.csv from the run directories, as a local sweep does");
+  slurm_flag->excludes(status_flag)->excludes(collect_flag)->excludes(sweep_check);
+  status_flag->excludes(collect_flag)->excludes(sweep_check);
+  collect_flag->excludes(sweep_check);
+  sweep->add_option("--partition", sweep_options.slurm.partition, "Slurm partition (--slurm)")
+      ->needs(slurm_flag);
+  sweep
+      ->add_option("--time", sweep_options.slurm.time_limit,
+                   "time limit of each run, as sbatch --time takes it (--slurm)")
+      ->needs(slurm_flag);
+  sweep
+      ->add_option("--cpus-per-run", sweep_options.slurm.cpus_per_run,
+                   "CPUs each run asks for (--slurm; default 1)")
+      ->check(CLI::PositiveNumber)
+      ->needs(slurm_flag);
+  sweep
+      ->add_option("--max-parallel", sweep_options.slurm.max_parallel,
+                   "at most K runs of the array at once (--slurm; default: no limit)")
+      ->check(CLI::PositiveNumber)
+      ->needs(slurm_flag);
+  sweep
+      ->add_option("--sbatch-arg", sweep_options.slurm.sbatch_args,
+                   "one more sbatch option for the job array, e.g. --sbatch-arg=--account=abc "
+                   "(--slurm; repeatable)")
+      ->allow_extra_args(false)
+      ->needs(slurm_flag);
+  sweep
+      ->add_option("--swarmnet", sweep_swarmnet,
+                   "the swarmnet the cluster's nodes run (--slurm; default: $SWARMNET_SLURM_BIN, "
+                   "else this one)")
+      ->needs(slurm_flag);
 
   swarmnet::StatsOptions stats_options;
   std::string stats_file;
@@ -348,6 +394,14 @@ static int run_main(int argc, char** argv) {
   if (*sweep) {
     sweep_options.file = sweep_file;
     sweep_options.out = sweep_out;
+    if (const char* bin = std::getenv("SWARMNET_SLURM_BIN");
+        sweep_swarmnet.empty() && bin != nullptr) {
+      sweep_swarmnet = bin;
+    }
+    sweep_options.slurm.swarmnet = sweep_swarmnet;
+    if (sweep_slurm) sweep_options.action = swarmnet::SweepAction::kSlurmSubmit;
+    if (sweep_status) sweep_options.action = swarmnet::SweepAction::kStatus;
+    if (sweep_collect) sweep_options.action = swarmnet::SweepAction::kCollect;
     return swarmnet::sweep_command(sweep_options);
   }
   if (*stats) {

@@ -28,9 +28,12 @@ inline std::string swarmnet_binary() {
   return bin != nullptr ? bin : "swarmnet";
 }
 
-inline CommandResult run_swarmnet(const std::string& arguments) {
+// `environment`: NAME=VALUE words (shell-quoted as needed) set for this command alone.
+inline CommandResult run_swarmnet(const std::string& arguments,
+                                  const std::string& environment = "") {
   CommandResult result;
-  const std::string command = swarmnet_binary() + " " + arguments + " 2>&1 </dev/null";
+  const std::string command = (environment.empty() ? "" : "env " + environment + " ") +
+                              swarmnet_binary() + " " + arguments + " 2>&1 </dev/null";
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
   std::array<char, 4096> buffer{};

@@ -1,40 +1,32 @@
 #include "experiments/sweep_command.hpp"
 
-#include <fcntl.h>
-#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
-#include <map>
 #include <optional>
-#include <set>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "coupling/process_spawn.hpp"
 #include "coupling/stop_signal.hpp"
+#include "experiments/slurm_sweep.hpp"
 #include "experiments/sweep_file.hpp"
+#include "experiments/sweep_lock.hpp"
+#include "experiments/sweep_plan.hpp"
 #include "experiments/sweep_results.hpp"
 #include "outputs/atomic_file.hpp"
 #include "outputs/output_files.hpp"
-#include "outputs/run_error.hpp"
-#include "plugin/plugin_loader.hpp"
-#include "scenario/scenario_loader.hpp"
 #include "session/exit_codes.hpp"
 
 namespace swarmnet {
 
 namespace {
-
-constexpr const char* kChildLog = "output.log";  // the run's stdout and stderr
 
 std::string format_duration(double seconds) {
   const long long s = std::llround(seconds);
@@ -47,51 +39,6 @@ std::string format_duration(double seconds) {
     std::snprintf(text, sizeof text, "%llds", s);
   }
   return text;
-}
-
-// Checks every expanded scenario as `swarmnet validate` would; each problem once, located in the
-// sweep file where a swept or fixed value caused it.
-std::vector<std::string> validate_runs(const SweepSpec& spec, const std::vector<SweepRun>& runs) {
-  std::map<std::string, std::string> origin;  // "--set KEY" -> sweep file location and value
-  for (const auto& fixed : spec.fixed) {
-    origin["--set " + fixed.key] = fixed.location + ": set " + fixed.key + "=" + fixed.text;
-  }
-  std::vector<std::string> problems;
-  std::set<std::string> seen;
-  PluginLoader loader;
-  for (const auto& run : runs) {
-    ScenarioOverrides overrides;
-    overrides.set = run.set;
-    overrides.seed = run.seed;
-    overrides.out_dir = "unused";
-    try {
-      (void)load_scenario(spec.base, overrides, loader);
-    } catch (const ScenarioError& error) {
-      for (const auto& line : error.problems()) {
-        std::string where = "run " + run.id;
-        for (std::size_t a = 0; a < spec.axes.size(); ++a) {
-          const SweepAxis& axis = spec.axes[a];
-          for (std::size_t k = 0; k < axis.keys.size(); ++k) {
-            const auto& value = axis.points[run.point[a]].values[k];
-            if (line.starts_with("--set " + axis.keys[k] + ":") ||
-                line.starts_with("--set " + axis.keys[k] + " ")) {
-              where = value.location + ": grid " + (axis.linked ? axis.name + ": " : "") +
-                      axis.keys[k] + "=" + value.text;
-            }
-          }
-        }
-        for (const auto& [option, place] : origin) {
-          if (line.starts_with(option + ":")) where = place;
-        }
-        if (seen.insert(line).second) problems.push_back(where.append(": ").append(line));
-        if (problems.size() >= 20) return problems;
-      }
-    } catch (const std::exception& error) {
-      if (seen.insert(error.what()).second)
-        problems.push_back("run " + run.id + ": " + error.what());
-    }
-  }
-  return problems;
 }
 
 std::filesystem::path self_executable() {
@@ -109,63 +56,16 @@ struct Child {
 // Starts `swarmnet run` for one run, its output into the run directory's output.log.
 pid_t spawn_run(const std::filesystem::path& exe, const SweepSpec& spec, const SweepRun& run,
                 const std::filesystem::path& dir) {
-  std::vector<std::string> args = {exe.string(), "run", spec.base.string()};
-  for (const auto& set : run.set) {
-    args.emplace_back("--set");
-    args.push_back(set);
-  }
-  // A run redone (failed or interrupted before) replaces what it left.
-  args.insert(args.end(), {"--seed", std::to_string(run.seed), "--out", dir.string(), "--quiet",
-                           "--overwrite"});
+  std::vector<std::string> args = {exe.string()};
+  for (auto& argument : run_arguments(spec, run, dir)) args.push_back(std::move(argument));
   SpawnRequest request;
   request.executable = exe;
   request.arguments = std::move(args);
-  request.output_file = dir / kChildLog;
+  request.output_file = dir / kRunOutputLog;
   // The run dies with the sweep (SIGTERM, so it still cleans up): no orphans after a kill.
   request.extra_environment = {std::string(kParentVariable) + "=" + std::to_string(::getpid())};
   std::string error;
   return spawn_process(request, error);
-}
-
-// Holds an exclusive lock on the sweep directory for this process's life: a second sweep into
-// the same directory (an immediate resume while the first still runs) is refused, not run into
-// the same run directories at the same time.
-class SweepLock {
- public:
-  explicit SweepLock(const std::filesystem::path& out) {
-    const std::filesystem::path path = out / ".sweep.lock";
-    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
-    if (fd_ < 0) throw RunError("cannot open " + path.string() + ": " + std::strerror(errno));
-    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-      char holder[32] = {};
-      const ssize_t n = ::pread(fd_, holder, sizeof holder - 1, 0);
-      ::close(fd_);
-      throw RunError("another sweep" +
-                     (n > 0 ? " (pid " + std::string(holder, static_cast<std::size_t>(n)) + ")"
-                            : std::string()) +
-                     " is running into " + out.string() + "; wait for it or stop it first");
-    }
-    const std::string pid = std::to_string(::getpid());
-    if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) < 0) {
-      // The lock holds without the pid; the pid only makes the refusal message clearer.
-    }
-  }
-  ~SweepLock() { ::close(fd_); }
-  SweepLock(const SweepLock&) = delete;
-  SweepLock& operator=(const SweepLock&) = delete;
-
- private:
-  int fd_ = -1;
-};
-
-std::string last_line(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::string last;
-  while (std::getline(in, line)) {
-    if (!line.empty()) last = line;
-  }
-  return last;
 }
 
 class SweepProgress {
@@ -230,21 +130,27 @@ int sweep_command(const SweepOptions& options) {
     std::fprintf(stderr, "swarmnet: error: %s\n", error.what());
     return kExitBadInput;
   }
+  const std::filesystem::path out = sweep_directory(spec, options.file, options.out);
+  if (options.action == SweepAction::kStatus) return sweep_status(runs, out);
+  if (options.action == SweepAction::kCollect) return sweep_collect(spec, runs, out);
   if (const auto problems = validate_runs(spec, runs); !problems.empty()) {
     std::fprintf(stderr, "swarmnet: error: the sweep %s gives invalid scenarios:\n",
                  options.file.string().c_str());
     for (const auto& line : problems) std::fprintf(stderr, "%s\n", line.c_str());
     return kExitBadInput;
   }
-  const std::filesystem::path out =
-      !options.out.empty() ? options.out
-      : !spec.out.empty()  ? spec.out
-                           : std::filesystem::path("runs/sweeps") / options.file.stem();
   if (options.validate_only) {
     std::printf("%s: valid sweep: %zu runs (%zu combinations x %zu seeds) of %s into %s\n",
                 options.file.string().c_str(), runs.size(), runs.size() / spec.seeds.size(),
                 spec.seeds.size(), spec.base.string().c_str(), out.string().c_str());
     return 0;
+  }
+  if (options.action == SweepAction::kSlurmSubmit) {
+    SlurmJobSettings settings = options.slurm;
+    if (settings.swarmnet.empty()) settings.swarmnet = self_executable();
+    settings.swarmnet = std::filesystem::absolute(settings.swarmnet).lexically_normal();
+    return slurm_submit_sweep(options.file, spec, runs, out,
+                              "swarmnet-" + options.file.stem().string(), settings);
   }
 
   const std::filesystem::path runs_dir = out / "runs";
@@ -267,17 +173,10 @@ int sweep_command(const SweepOptions& options) {
     write_file_atomically(out / "sweep.yaml", std::string(std::istreambuf_iterator<char>(in), {}));
   }
 
-  std::vector<SweepRunResult> results(runs.size());
+  std::vector<SweepRunResult> results = finished_runs(runs, out);
   std::vector<std::size_t> pending;
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    results[i].run = &runs[i];
-    results[i].summary = runs_dir / runs[i].id / kSummaryFile;
-    if (std::filesystem::exists(results[i].summary)) {
-      results[i].status = "ok";
-    } else {
-      results[i].status = "not run";
-      pending.push_back(i);
-    }
+    if (results[i].status != "ok") pending.push_back(i);
   }
   const std::size_t skipped = runs.size() - pending.size();
   const unsigned jobs =
@@ -332,9 +231,9 @@ int sweep_command(const SweepOptions& options) {
     if (stopping && !ok) continue;  // interrupted: redone next time
     result.status = ok ? "ok" : "failed";
     if (!ok) ++failed;
-    const auto log = std::filesystem::exists(dir / kLogFile) ? dir / kLogFile : dir / kChildLog;
+    const auto log = std::filesystem::exists(dir / kLogFile) ? dir / kLogFile : dir / kRunOutputLog;
     progress.finished(runs[child.run].id, ok, seconds,
-                      last_line(dir / kChildLog) + " (log: " + log.string() + ")");
+                      last_output_line(dir / kRunOutputLog) + " (log: " + log.string() + ")");
   }
   progress.end();
 
@@ -359,7 +258,7 @@ int sweep_command(const SweepOptions& options) {
       if (result.status != "failed") continue;
       const auto dir = runs_dir / result.run->id;
       std::fprintf(stderr, "  failed: %s (log: %s)\n", result.run->id.c_str(),
-                   (dir / kChildLog).string().c_str());
+                   (dir / kRunOutputLog).string().c_str());
     }
     return kExitRunFailed;
   }
