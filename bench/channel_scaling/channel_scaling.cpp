@@ -81,11 +81,11 @@ nlohmann::ordered_json run(PluginLoader& loader, std::uint32_t nodes, double sim
     // Rate 1/s each of broadcast and unicast: each node sends with probability 0.1 per step.
     for (std::uint32_t i = 0; i < nodes; ++i) {
       if (random.bernoulli(0.1)) {
-        batch.messages.push_back(AppMessage{next_id++, i, kBroadcast, Payload(256)});
+        batch.messages.push_back(AppMessage{next_id++, i, kBroadcast, 0, Payload(256)});
       }
       if (!neighbours[i].empty() && random.bernoulli(0.1)) {
         const RobotId to = neighbours[i][random.below(neighbours[i].size())];
-        batch.messages.push_back(AppMessage{next_id++, i, to, Payload(256)});
+        batch.messages.push_back(AppMessage{next_id++, i, to, 0, Payload(256)});
       }
     }
     const double before = cpu_seconds();

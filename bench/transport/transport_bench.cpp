@@ -70,7 +70,7 @@ StepBatch make_batch(std::uint32_t robots) {
   batch.start = SimTime{100'000'000};
   for (std::uint32_t i = 0; i < robots; ++i) batch.positions.emplace_back(i * 0.5, i * 0.25);
   for (std::uint32_t i = 0; i < std::max<std::uint32_t>(1, robots / 10); ++i) {
-    batch.messages.push_back({i, i, (i + 7) % robots, Payload(512, std::byte{1})});
+    batch.messages.push_back({i, i, (i + 7) % robots, 0, Payload(512, std::byte{1})});
   }
   return batch;
 }
@@ -80,7 +80,7 @@ StepResult make_result(const StepBatch& batch) {
   result.step = batch.step;
   for (const AppMessage& m : batch.messages) {
     result.deliveries.push_back({m.message_id, m.source, m.destination, m.destination, batch.start,
-                                 batch.start + SimTime{2'000'000}, 2, m.payload});
+                                 batch.start + SimTime{2'000'000}, 2, m.port, m.payload});
   }
   return result;
 }

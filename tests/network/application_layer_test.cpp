@@ -49,8 +49,8 @@ class NetworkApplicationUnit : public ::testing::Test {
 
 TEST_F(NetworkApplicationUnit, InjectionBuildsThePacket) {
   const auto payload = std::make_shared<const Payload>(Payload(10, std::byte{7}));
-  application_.inject({12, 0, 2, payload}, SimTime{500}, routing_);
-  application_.inject({13, 1, kBroadcast, payload}, SimTime{600}, routing_);
+  application_.inject({12, 0, 2, 9, payload}, SimTime{500}, routing_);
+  application_.inject({13, 1, kBroadcast, 0, payload}, SimTime{600}, routing_);
   ASSERT_EQ(routing_.sent.size(), 2U);
   const Packet& p = routing_.sent[0];
   EXPECT_EQ(p.uid, 1U);
@@ -60,6 +60,7 @@ TEST_F(NetworkApplicationUnit, InjectionBuildsThePacket) {
   EXPECT_EQ(p.destination, 2U);
   EXPECT_EQ(p.sent_at, SimTime{500});
   EXPECT_EQ(p.hops, 0U);
+  EXPECT_EQ(p.port, 9U);          // the controller port, carried beside the bytes
   EXPECT_EQ(p.payload, payload);  // shared, not copied
   EXPECT_EQ(metrics_.sent(), 2U);
   EXPECT_EQ(metrics_.unicast_sent(), 1U);
@@ -72,7 +73,7 @@ TEST_F(NetworkApplicationUnit, InjectionBuildsThePacket) {
 
 TEST_F(NetworkApplicationUnit, DuplicatesAreSuppressedPerNode) {
   application_.set_output(&deliveries_);
-  application_.inject({1, 0, kBroadcast, nullptr}, SimTime{0}, routing_);
+  application_.inject({1, 0, kBroadcast, 0, nullptr}, SimTime{0}, routing_);
   Packet copy = routing_.sent.at(0);
   copy.hops = 2;
   EXPECT_TRUE(application_.deliver(1, copy, SimTime{100}));
@@ -90,11 +91,13 @@ TEST_F(NetworkApplicationUnit, DuplicatesAreSuppressedPerNode) {
 
 TEST_F(NetworkApplicationUnit, OnlyTheDestinationsFirstDeliveryCounts) {
   application_.set_output(&deliveries_);
-  application_.inject({5, 0, 2, nullptr}, SimTime{1'000}, routing_);
+  application_.inject({5, 0, 2, 6, nullptr}, SimTime{1'000}, routing_);
   Packet copy = routing_.sent.at(0);
   copy.hops = 3;
   EXPECT_TRUE(application_.deliver(2, copy, SimTime{5'000}));
   EXPECT_FALSE(application_.deliver(2, copy, SimTime{6'000}));
+  ASSERT_EQ(deliveries_.size(), 1U);
+  EXPECT_EQ(deliveries_[0].port, 6U);  // delivered to the port it was sent to
   EXPECT_EQ(application_.undelivered_unicast(), 0U);
   const auto report = network_report_json(metrics_.report(application_.undelivered_unicast(), 0));
   EXPECT_EQ(report["packets"]["delivered"], 1);
@@ -105,7 +108,7 @@ TEST_F(NetworkApplicationUnit, OnlyTheDestinationsFirstDeliveryCounts) {
 
 TEST_F(NetworkApplicationUnit, TheDuplicateMemoryIsBoundedByItsWindow) {
   application_.set_output(&deliveries_);
-  application_.inject({1, 0, kBroadcast, nullptr}, SimTime{0}, routing_);
+  application_.inject({1, 0, kBroadcast, 0, nullptr}, SimTime{0}, routing_);
   const Packet copy = routing_.sent.at(0);
   EXPECT_TRUE(application_.deliver(1, copy, SimTime{10}));
   // Past the window the entry is forgotten, and a straggling copy counts as new.

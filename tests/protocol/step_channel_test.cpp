@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "inproc_channel.hpp"
 #include "protocol/record_codec.hpp"
 
@@ -28,6 +30,7 @@ StepBatch sample_batch(std::uint32_t robots, std::uint32_t messages) {
     m.message_id = 100 + i;
     m.source = i % robots;
     m.destination = i % 3 == 0 ? kBroadcast : (i + 1) % robots;
+    m.port = static_cast<std::uint16_t>(i * 7919);
     m.payload.assign(std::size_t{i} * 10, static_cast<std::byte>(i));
     batch.messages.push_back(std::move(m));
   }
@@ -63,6 +66,7 @@ TEST(StepChannel, BatchRoundTripsAcrossChunks) {
     EXPECT_EQ(got.messages[i].message_id, sent.messages[i].message_id);
     EXPECT_EQ(got.messages[i].source, sent.messages[i].source);
     EXPECT_EQ(got.messages[i].destination, sent.messages[i].destination);
+    EXPECT_EQ(got.messages[i].port, sent.messages[i].port);
     EXPECT_EQ(got.messages[i].payload, sent.messages[i].payload);
   }
   ASSERT_TRUE(robot.send_finish().ok());
@@ -93,6 +97,7 @@ TEST(StepChannel, ResultAndReportRoundTrip) {
     d.sent_at = SimTime{1000 + i};
     d.delivered_at = SimTime{5000 + i};
     d.hops = i + 1;
+    d.port = static_cast<std::uint16_t>(65535 - i);
     d.payload.assign(i, std::byte{0x5a});
     sent.deliveries.push_back(d);
   }
@@ -108,6 +113,7 @@ TEST(StepChannel, ResultAndReportRoundTrip) {
     EXPECT_EQ(got.deliveries[i].destination, sent.deliveries[i].destination);
     EXPECT_EQ(got.deliveries[i].delivered_at, sent.deliveries[i].delivered_at);
     EXPECT_EQ(got.deliveries[i].hops, sent.deliveries[i].hops);
+    EXPECT_EQ(got.deliveries[i].port, sent.deliveries[i].port);
     EXPECT_EQ(got.deliveries[i].payload, sent.deliveries[i].payload);
   }
   NetworkReport report;
@@ -297,6 +303,21 @@ TEST_F(StepChannelBounds, AStepBeginAnnouncingMillionsOfMessagesIsRefusedBeforeA
   EXPECT_NE(r.error.find("25000000 messages in step_begin; at most 640"), std::string::npos)
       << r.error;
   EXPECT_EQ(batch.messages.capacity(), 0U);
+}
+
+// A NaN or infinite position would index no cell of the channel's grid: refused with the robot.
+TEST_F(StepChannelBounds, APositionThatIsNotAFiniteNumberIsRefused) {
+  robot_.fix_limits(Welcome{1, 4, 100'000'000});
+  network_.fix_limits(Welcome{1, 4, 100'000'000});
+  StepBatch batch = sample_batch(4, 0);
+  batch.positions[2] = Vec2(std::numeric_limits<double>::quiet_NaN(), 1.0);
+  ASSERT_TRUE(robot_.send_batch(batch).ok());
+  StepBatch got;
+  bool finished = false;
+  const ProtocolResult r = network_.receive_batch(got, finished);
+  EXPECT_EQ(r.io, IoStatus::corrupt);
+  EXPECT_NE(r.error.find("a position that is not a finite number for robot 2"), std::string::npos)
+      << r.error;
 }
 
 TEST_F(StepChannelBounds, AStepBeginWithAnotherSwarmSizeOrBeforeTheHandshakeIsRefused) {

@@ -126,7 +126,7 @@ std::pair<std::uint64_t, std::uint64_t> cbr_receptions(PluginLoader& loader,
     deliveries.clear();
     for (const AppMessage& m : now) {
       deliveries.push_back({m.message_id, m.source, m.destination, m.destination, world.now(),
-                            world.now(), 1, m.payload});
+                            world.now(), 1, m.port, m.payload});
     }
     total_sent += now.size();
   }
@@ -206,8 +206,8 @@ TEST_F(RobotContextTest, ControllersReadTheAxleTheArenaAndTheirPort) {
   EXPECT_EQ(robot.inbox().size(), 1U);  // robot 1's inbox for port 4
   std::vector<std::byte> payload(3, std::byte{1});
   EXPECT_EQ(robot.send(kBroadcast, payload), 0U);
-  ASSERT_EQ(state_.message_ports.size(), 1U);
-  EXPECT_EQ(state_.message_ports[0], 4U);
+  ASSERT_EQ(outbox_.size(), 1U);
+  EXPECT_EQ(outbox_[0].port, 4U);  // the message goes to port 4 on its receivers
 }
 
 TEST_F(RobotContextTest, WheelSpeedsAreClamped) {

@@ -27,6 +27,9 @@ struct Packet {
   NodeId destination = kBroadcast;
   std::uint64_t message_id = kNoMessage;  // the application message carried; kNoMessage: control
   SimTime sent_at{};                      // when the originator's application handed it down
+  // The controller port the message is for (swarmnet/controller.hpp). Carried beside the bytes,
+  // not in them: it adds nothing to a frame's size. Routing copies it with the packet.
+  std::uint16_t port = 0;
   std::uint32_t hops = 0;            // links traversed so far; the kernel counts them on reception
   std::vector<std::uint8_t> header;  // the routing protocol's own header, serialised by it
   std::shared_ptr<const Payload> payload;  // application bytes (null for control packets)

@@ -58,13 +58,17 @@ class GridCells {
   [[nodiscard]] std::int64_t cells_along(double length_m) const {
     return std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(length_m / cell_m_)));
   }
+  // A NaN coordinate (which clamp would pass through, and a cast would turn into any index)
+  // falls in the first cell, as anything below the rectangle does.
   [[nodiscard]] std::int64_t column_of(double x) const {
     const double c = std::floor((x - bounds_.x_min_m) / cell_m_);
-    return static_cast<std::int64_t>(std::clamp(c, 0.0, static_cast<double>(columns_ - 1)));
+    if (!(c > 0.0)) return 0;
+    return static_cast<std::int64_t>(std::min(c, static_cast<double>(columns_ - 1)));
   }
   [[nodiscard]] std::int64_t row_of(double y) const {
     const double r = std::floor((y - bounds_.y_min_m) / cell_m_);
-    return static_cast<std::int64_t>(std::clamp(r, 0.0, static_cast<double>(rows_ - 1)));
+    if (!(r > 0.0)) return 0;
+    return static_cast<std::int64_t>(std::min(r, static_cast<double>(rows_ - 1)));
   }
 
   Rect bounds_;

@@ -13,6 +13,7 @@ void ApplicationLayer::inject(const Message& message, SimTime now, Routing& sour
   packet.destination = message.destination;
   packet.message_id = message.message_id;
   packet.sent_at = now;
+  packet.port = message.port;
   packet.payload = message.payload;
   const bool broadcast = packet.destination == kBroadcast;
   metrics_.message_sent(broadcast);
@@ -51,6 +52,7 @@ bool ApplicationLayer::deliver(NodeId receiver, const Packet& packet, SimTime no
     delivery.sent_at = packet.sent_at;
     delivery.delivered_at = now;
     delivery.hops = packet.hops;
+    delivery.port = packet.port;
     if (packet.payload) delivery.payload = *packet.payload;
     output_->push_back(std::move(delivery));
   }

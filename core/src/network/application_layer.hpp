@@ -38,6 +38,7 @@ class ApplicationLayer {
     std::uint64_t message_id = 0;
     NodeId source = kNoNode;
     NodeId destination = kBroadcast;
+    std::uint16_t port = 0;
     std::shared_ptr<const Payload> payload;
   };
 

@@ -104,6 +104,7 @@ void NetworkSimulator::run_step(const StepBatch& batch, StepResult& result) {
   channel_.set_positions(batch.positions);
   for (const AppMessage& message : batch.messages) {
     ApplicationLayer::Message pending{message.message_id, message.source, message.destination,
+                                      message.port,
                                       std::make_shared<const Payload>(message.payload)};
     Routing& routing = nodes_[message.source]->routing();
     scheduler_.schedule_at(batch.start + injection_offset(seed_, message.message_id, step_),

@@ -1,6 +1,7 @@
 #include "protocol/step_channel.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "protocol/network_report_codec.hpp"
@@ -216,9 +217,9 @@ ProtocolResult StepChannel::send_batch(const StepBatch& batch) {
   }
   for (const AppMessage& message : batch.messages) {
     deliveries_owed_ += message.destination == kBroadcast ? limits_.robots : 1U;
-    if (auto r =
-            send_record("message", false, RecordType::message, message.message_id, message.source,
-                        message.destination, std::span<const std::byte>(message.payload));
+    if (auto r = send_record("message", false, RecordType::message, message.message_id,
+                             message.source, message.destination, message.port,
+                             std::span<const std::byte>(message.payload));
         !r.ok()) {
       return r;
     }
@@ -271,6 +272,11 @@ ProtocolResult StepChannel::receive_batch(StepBatch& batch, bool& finished) {
       double y = 0.0;
       (void)reader->get(x);  // the length check above guarantees both
       (void)reader->get(y);
+      // A NaN or infinite position would index no grid cell of the channel.
+      if (!std::isfinite(x) || !std::isfinite(y)) {
+        return over_limit("sent a position that is not a finite number for robot " +
+                          std::to_string(first + i) + " in step " + std::to_string(batch.step));
+      }
       batch.positions[first + i] = Vec2(x, y);
     }
     filled += count;
@@ -280,7 +286,7 @@ ProtocolResult StepChannel::receive_batch(StepBatch& batch, bool& finished) {
     if (auto r = receive(type, reader); !r.ok()) return r;
     if (type != RecordType::message) return unexpected(type, "message");
     if (!reader->get(message.message_id) || !reader->get(message.source) ||
-        !reader->get(message.destination) ||
+        !reader->get(message.destination) || !reader->get(message.port) ||
         !reader->get_bytes(message.payload, kMaxPayloadBytes) || !reader->at_end()) {
       return malformed(type);
     }
@@ -301,7 +307,7 @@ ProtocolResult StepChannel::send_result(const StepResult& result) {
     if (auto r = send_record("delivery", false, RecordType::delivery, delivery.message_id,
                              delivery.source, delivery.destination, delivery.receiver,
                              delivery.sent_at.count(), delivery.delivered_at.count(), delivery.hops,
-                             std::span<const std::byte>(delivery.payload));
+                             delivery.port, std::span<const std::byte>(delivery.payload));
         !r.ok()) {
       return r;
     }
@@ -329,8 +335,8 @@ ProtocolResult StepChannel::receive_result(StepResult& result) {
       std::int64_t delivered = 0;
       if (!reader->get(d.message_id) || !reader->get(d.source) || !reader->get(d.destination) ||
           !reader->get(d.receiver) || !reader->get(sent) || !reader->get(delivered) ||
-          !reader->get(d.hops) || !reader->get_bytes(d.payload, kMaxPayloadBytes) ||
-          !reader->at_end()) {
+          !reader->get(d.hops) || !reader->get(d.port) ||
+          !reader->get_bytes(d.payload, kMaxPayloadBytes) || !reader->at_end()) {
         return malformed(type);
       }
       d.sent_at = SimTime{sent};

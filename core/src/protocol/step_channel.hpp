@@ -42,7 +42,8 @@ struct ProtocolLimits {
   std::uint64_t max_messages_per_step = 0;  // robots x kMaxMessagesPerRobotStep
 };
 
-// The largest swarm a hello may announce (the scenario's own limit on robots.count).
+// The largest swarm a welcome may fix (the scenario's own limit on robots.count, which
+// scenario_schema.cpp states again as the key's range).
 inline constexpr std::uint32_t kMaxRobots = 100000;
 
 // Version of the records above; both halves must speak the same one.

@@ -26,6 +26,7 @@ struct AppMessage {
   std::uint64_t message_id = 0;  // unique, ascending in send order
   RobotId source = kNoNode;
   RobotId destination = kBroadcast;
+  std::uint16_t port = 0;  // the sending controller's, and so the receiving one's
   Payload payload;
 };
 
@@ -46,6 +47,7 @@ struct Delivery {
   SimTime sent_at{};  // when the network took the message in
   SimTime delivered_at{};
   std::uint32_t hops = 0;
+  std::uint16_t port = 0;  // the message's (AppMessage::port)
   Payload payload;
 };
 

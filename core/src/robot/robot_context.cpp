@@ -50,9 +50,8 @@ std::uint64_t WorldRobotContext::send(RobotId destination, std::span<const std::
         std::to_string(kMaxMessagesPerRobotStep) + " per robot, kMaxMessagesPerRobotStep)");
   }
   const std::uint64_t message_id = state_->next_message_id++;
-  state_->message_ports.push_back(state_->current_port);  // at index message_id
-  state_->outbox->push_back(
-      AppMessage{message_id, id_, destination, Payload(payload.begin(), payload.end())});
+  state_->outbox->push_back(AppMessage{message_id, id_, destination, state_->current_port,
+                                       Payload(payload.begin(), payload.end())});
   return message_id;
 }
 

@@ -37,8 +37,6 @@ struct RobotWorldState {
   // The controller entry running now: its port, and that port's index in `ports`.
   std::uint16_t current_port = 0;
   std::size_t current_port_index = 0;
-  // The port every message was sent from (and so to), by message id.
-  std::vector<std::uint16_t> message_ports;
   SimTime now{};
   double step_s = 0.0;
   std::uint64_t next_message_id = 0;

@@ -72,14 +72,11 @@ bool overlaps_obstacle(const Arena& arena, const Vec2& p, double radius_m) {
 // A disc overlaps a movable object: a cylinder's disc, or a box turned by its heading (the disc's
 // centre taken into the box's frame, then the nearest point of the box).
 bool overlaps_object(const ArenaObject& object, const Vec2& p, double radius_m) {
-  const Vec2 offset = p - object.position;
   if (object.shape == ArenaObject::Shape::cylinder) {
     const double contact_m = object.radius_m + radius_m;
-    return offset.squaredNorm() < contact_m * contact_m;
+    return (p - object.position).squaredNorm() < contact_m * contact_m;
   }
-  const double c = std::cos(object.heading_rad);
-  const double s = std::sin(object.heading_rad);
-  const Vec2 local(c * offset.x() + s * offset.y(), -s * offset.x() + c * offset.y());
+  const Vec2 local = in_frame(p, object.position, object.heading_rad);
   const Vec2 nearest(std::clamp(local.x(), -0.5 * object.size_x_m, 0.5 * object.size_x_m),
                      std::clamp(local.y(), -0.5 * object.size_y_m, 0.5 * object.size_y_m));
   return (local - nearest).squaredNorm() < radius_m * radius_m;

@@ -55,6 +55,7 @@ RobotWorld::RobotWorld(const RobotSettings& settings, PluginLoader& loader) {
   }
   std::sort(state_.ports.begin(), state_.ports.end());
   state_.ports.erase(std::unique(state_.ports.begin(), state_.ports.end()), state_.ports.end());
+  for (const std::uint16_t port : entry_ports_) entry_port_indices_.push_back(port_index(port));
   state_.inboxes.resize(count * std::max<std::size_t>(state_.ports.size(), 1));
 
   PluginArgs physics_args;
@@ -104,19 +105,17 @@ std::size_t RobotWorld::port_index(std::uint16_t port) const {
 
 void RobotWorld::enter(std::size_t entry) {
   state_.current_port = entry_ports_[entry];
-  state_.current_port_index = port_index(entry_ports_[entry]);
+  state_.current_port_index = entry_port_indices_[entry];
 }
 
 void RobotWorld::fill_inboxes(std::span<const Delivery> deliveries) {
   for (Inbox& inbox : state_.inboxes) inbox.size = 0;
   const std::size_t ports = state_.ports.size();
   for (const Delivery& delivery : deliveries) {
-    // A message id this half never sent (only a faulty peer returns one) has no port.
-    if (delivery.receiver >= state_.bodies.size() ||
-        delivery.message_id >= state_.message_ports.size() || ports == 0) {
-      continue;
-    }
-    const std::size_t k = port_index(state_.message_ports[delivery.message_id]);
+    if (delivery.receiver >= state_.bodies.size() || ports == 0) continue;
+    // A port no controller entry has (only a faulty peer sends one) reaches no inbox.
+    const std::size_t k = port_index(delivery.port);
+    if (k == ports || state_.ports[k] != delivery.port) continue;
     Inbox& inbox = state_.inboxes[delivery.receiver * ports + k];
     if (inbox.size == inbox.slots.size()) inbox.slots.emplace_back();
     ReceivedMessage& message = inbox.slots[inbox.size++];

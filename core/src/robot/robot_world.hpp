@@ -77,6 +77,7 @@ class RobotWorld {
   std::size_t controllers_per_robot_ = 0;
   std::vector<PluginInstance<Controller>> controllers_;  // robot r's entry c at r * per_robot + c
   std::vector<std::uint16_t> entry_ports_;               // controller entry c's port
+  std::vector<std::size_t> entry_port_indices_;          // and its index in state_.ports
   std::vector<WorldRobotContext> contexts_;
   std::vector<AppMessage> sent_in_init_;
 };
