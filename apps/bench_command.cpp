@@ -11,14 +11,13 @@
 #include <vector>
 
 #include "coupling/process_spawn.hpp"
+#include "plugin/executable_layout.hpp"
 
 namespace swarmnet {
 
 namespace {
 
-std::filesystem::path own_directory() {
-  return std::filesystem::read_symlink("/proc/self/exe").parent_path();
-}
+std::filesystem::path own_directory() { return running_executable().parent_path(); }
 
 // Benchmark name "Family/transport/arg/..." -> value of `field`, keyed by (family, transport, arg).
 using Key = std::tuple<std::string, std::string, std::string>;

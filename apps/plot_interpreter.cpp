@@ -1,7 +1,5 @@
 #include "plot_interpreter.hpp"
 
-#include <fcntl.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -9,7 +7,7 @@
 #include <cerrno>
 #include <sstream>
 
-extern char** environ;
+#include "coupling/process_spawn.hpp"
 
 namespace swarmnet {
 
@@ -17,18 +15,10 @@ namespace {
 
 // Whether `python -c "import matplotlib"` succeeds, its output discarded.
 bool imports_matplotlib(const std::filesystem::path& python) {
-  posix_spawn_file_actions_t files;
-  posix_spawn_file_actions_init(&files);
-  posix_spawn_file_actions_addopen(&files, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&files, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-  std::string program = python.string();
-  std::string flag = "-c";
-  std::string code = "import matplotlib";
-  char* argv[] = {program.data(), flag.data(), code.data(), nullptr};
-  pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, program.c_str(), &files, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&files);
-  if (spawned != 0) return false;
+  std::string error;
+  const pid_t pid =
+      spawn_process({python, {python.string(), "-c", "import matplotlib"}, {}, "/dev/null"}, error);
+  if (pid < 0) return false;
   int status = 0;
   while (waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) return false;

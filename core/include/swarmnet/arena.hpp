@@ -13,6 +13,15 @@ namespace swarmnet {
 // A movable object resting on the floor (scenario key arena.objects): a box or an upright
 // cylinder that robots can push. Physics engines with dynamics (ode) move it; kinematic2d
 // refuses a scenario that has objects.
+// `point` in the frame of a body at `origin` turned by `heading_rad` (x along the heading): how a
+// box is tested against a point or a ray, in its own frame where it is axis-aligned.
+inline Vec2 in_frame(const Vec2& point, const Vec2& origin, double heading_rad) {
+  const double c = std::cos(heading_rad);
+  const double s = std::sin(heading_rad);
+  const Vec2 offset = point - origin;
+  return {c * offset.x() + s * offset.y(), -s * offset.x() + c * offset.y()};
+}
+
 struct ArenaObject {
   enum class Shape : std::uint8_t { box, cylinder };
 

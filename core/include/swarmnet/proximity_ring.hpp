@@ -75,11 +75,8 @@ inline double ray_to_object(const ArenaObject& shape, const ObjectPose& pose, co
   if (shape.shape == ArenaObject::Shape::cylinder) {
     return ray_to_disc(pose.position, shape.radius_m, origin, u);
   }
-  const double c = std::cos(pose.heading_rad);
-  const double s = std::sin(pose.heading_rad);
-  const Vec2 offset = origin - pose.position;
-  const Vec2 local_origin(c * offset.x() + s * offset.y(), -s * offset.x() + c * offset.y());
-  const Vec2 local_u(c * u.x() + s * u.y(), -s * u.x() + c * u.y());
+  const Vec2 local_origin = in_frame(origin, pose.position, pose.heading_rad);
+  const Vec2 local_u = in_frame(u, Vec2::Zero(), pose.heading_rad);
   const Rect box{-0.5 * shape.size_x_m, -0.5 * shape.size_y_m, 0.5 * shape.size_x_m,
                  0.5 * shape.size_y_m};
   return ray_to_rect(box, local_origin, local_u);

@@ -22,10 +22,13 @@ void serve_network_half(const Scenario& scenario, PluginLoader& loader, StepChan
 
 // What the network half simulates and where it writes, decided from the robot half's hello: the
 // scenario it validated, with the loader that resolved its plugins (used again to create them).
+// A network half in its own process made that loader and owns it (`own_loader`); one in a thread
+// borrows the robot half's, which outlives the thread.
 struct NetworkSetup {
   Scenario scenario;
   std::filesystem::path run_dir;
-  std::shared_ptr<PluginLoader> loader;
+  PluginLoader* loader = nullptr;
+  std::unique_ptr<PluginLoader> own_loader;
 };
 
 // What a network half simulating `scenario` says in its welcome.

@@ -70,8 +70,7 @@ class InprocLink final : public NetworkLink {
       try {
         serve_network_connection(network_channel_, [&](const Hello&) {
           // The robot half's own validated scenario and loader: nothing is resolved twice.
-          return NetworkSetup{scenario, run_dir,
-                              std::shared_ptr<PluginLoader>(std::shared_ptr<void>(), &loader)};
+          return NetworkSetup{scenario, run_dir, &loader, nullptr};
         });
       } catch (const std::exception& error) {
         error_ = error.what();

@@ -94,10 +94,11 @@ int serve_parent(const NetworkProcessOptions& options) {
   try {
     // The parent's own scenario, plugin paths and run directory: it started this process.
     serve_network_connection(channel, [&](const Hello& hello) {
-      auto loader = std::make_shared<PluginLoader>();
+      auto loader = std::make_unique<PluginLoader>();
       Scenario scenario =
           load_scenario_text(hello.scenario_yaml, "the robot half's scenario", *loader);
-      return NetworkSetup{std::move(scenario), std::filesystem::path(hello.run_dir),
+      PluginLoader* resolved = loader.get();
+      return NetworkSetup{std::move(scenario), std::filesystem::path(hello.run_dir), resolved,
                           std::move(loader)};
     });
   } catch (const std::exception& error) {
@@ -156,7 +157,7 @@ std::string redact(std::string message, const std::vector<std::filesystem::path>
 // server names. Errors reach the peer with this host's paths redacted.
 NetworkSetup remote_setup(const Hello& hello, const NetworkProcessOptions& options,
                           const std::filesystem::path& out) {
-  auto loader = std::make_shared<PluginLoader>(options.plugin_paths);
+  auto loader = std::make_unique<PluginLoader>(options.plugin_paths);
   std::vector<std::filesystem::path> private_dirs = loader->search_path();
   private_dirs.push_back(out);
   try {
@@ -164,8 +165,9 @@ NetworkSetup remote_setup(const Hello& hello, const NetworkProcessOptions& optio
     if (tree.IsMap() && tree["plugin_paths"]) tree.remove("plugin_paths");
     YAML::Emitter emitter;
     emitter << tree;
+    PluginLoader* resolved = loader.get();
     NetworkSetup setup{load_scenario_text(emitter.c_str(), "the robot half's scenario", *loader),
-                       next_run_dir(out), loader};
+                       next_run_dir(out), resolved, std::move(loader)};
     setup.scenario.plugin_paths = options.plugin_paths;
     return setup;
   } catch (const std::exception& error) {

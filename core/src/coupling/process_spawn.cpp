@@ -31,10 +31,15 @@ pid_t spawn_process(const SpawnRequest& request, std::string& error) {
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, output.c_str(),
                                      O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  } else if (request.output_fd >= 0 && request.error_fd >= 0) {
+    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_adddup2(&actions, request.output_fd, STDOUT_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, request.error_fd, STDERR_FILENO);
   }
   pid_t pid = -1;
+  const auto spawn = request.search_path ? posix_spawnp : posix_spawn;
   const int rc =
-      posix_spawn(&pid, request.executable.c_str(), &actions, nullptr, argv.data(), envp.data());
+      spawn(&pid, request.executable.c_str(), &actions, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
   if (rc != 0) {
     error = std::strerror(rc);

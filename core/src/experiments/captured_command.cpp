@@ -2,7 +2,6 @@
 
 #include <fcntl.h>
 #include <poll.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -10,7 +9,7 @@
 #include <cerrno>
 #include <cstring>
 
-extern char** environ;
+#include "coupling/process_spawn.hpp"
 
 namespace swarmnet {
 
@@ -55,24 +54,18 @@ CapturedCommand run_captured(const std::vector<std::string>& arguments) {
     result.error = std::string("cannot create a pipe: ") + std::strerror(errno);
     return result;
   }
-  std::vector<std::string> args = arguments;
-  std::vector<char*> argv;
-  argv.reserve(args.size() + 1);
-  for (auto& argument : args) argv.push_back(argument.data());
-  argv.push_back(nullptr);
-
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_adddup2(&actions, out.write_end(), STDOUT_FILENO);
-  posix_spawn_file_actions_adddup2(&actions, err.write_end(), STDERR_FILENO);
-  pid_t pid = -1;
-  const int rc = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
+  SpawnRequest request;
+  request.executable = arguments.front();
+  request.arguments = arguments;
+  request.output_fd = out.write_end();
+  request.error_fd = err.write_end();
+  request.search_path = true;
+  std::string error;
+  const pid_t pid = spawn_process(request, error);
   out.close_write();
   err.close_write();
-  if (rc != 0) {
-    result.error = std::strerror(rc);
+  if (pid < 0) {
+    result.error = error;
     return result;
   }
   result.started = true;

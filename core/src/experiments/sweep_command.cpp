@@ -22,6 +22,7 @@
 #include "experiments/sweep_results.hpp"
 #include "outputs/atomic_file.hpp"
 #include "outputs/output_files.hpp"
+#include "plugin/executable_layout.hpp"
 #include "session/exit_codes.hpp"
 
 namespace swarmnet {
@@ -42,9 +43,8 @@ std::string format_duration(double seconds) {
 }
 
 std::filesystem::path self_executable() {
-  std::error_code ec;
-  auto path = std::filesystem::read_symlink("/proc/self/exe", ec);
-  return ec ? std::filesystem::path("swarmnet") : path;
+  auto path = running_executable();
+  return path.empty() ? std::filesystem::path("swarmnet") : path;
 }
 
 struct Child {

@@ -15,10 +15,15 @@ ExecutableLayout layout_around(const std::filesystem::path& executable) {
   return {root / "plugins", root / "share" / "swarmnet"};
 }
 
-ExecutableLayout executable_layout() {
+std::filesystem::path running_executable() {
   std::error_code ec;
-  const auto executable = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec) return {};
+  auto executable = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::filesystem::path() : executable;
+}
+
+ExecutableLayout executable_layout() {
+  const auto executable = running_executable();
+  if (executable.empty()) return {};
   return layout_around(executable);
 }
 

@@ -21,8 +21,10 @@ struct ExecutableLayout {
 // The layout around `executable` (an absolute path to a command in <root>/bin or <root>/tests).
 ExecutableLayout layout_around(const std::filesystem::path& executable);
 
-// The layout around the running process's executable (/proc/self/exe). Empty paths when the
-// executable cannot be read.
+// The running process's executable (/proc/self/exe); empty when it cannot be read.
+std::filesystem::path running_executable();
+
+// The layout around running_executable(). Empty paths when the executable cannot be read.
 ExecutableLayout executable_layout();
 
 }  // namespace swarmnet

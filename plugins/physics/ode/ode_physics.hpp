@@ -41,7 +41,8 @@ class OdePhysics final : public Physics {
   // Planar velocity of robot `robot`'s centre, m/s.
   [[nodiscard]] Vec2 velocity(std::size_t robot) const;
 
-  // More sub-steps than this in one step is refused (a body would be moving at absurd speed).
+  // The sub-step count is capped at this: only a body moving at an absurd speed (a diverged
+  // solver) would ask for more, and the step then takes this many rather than stall the run.
   static constexpr int kMaxSubsteps = 100000;
 
  private:

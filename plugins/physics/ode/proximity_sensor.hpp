@@ -1,5 +1,5 @@
-// The proximity ring, answered against the same geometry ODE collides: the arena's walls,
-// the obstacles and the other robots' discs.
+// The proximity ring, answered against the same geometry ODE collides: the arena's walls, the
+// obstacles, the movable objects and the other robots' discs.
 //
 // Rays are cast analytically against the same shapes (the SDK's ProximityRing, as kinematic2d
 // does) rather than as ODE ray geoms (one space query and one geom per ray, moved for every
@@ -28,7 +28,8 @@ class ProximitySensor {
   void update(std::span<const RobotBody> bodies, std::span<const ObjectPose> objects);
 
   // Ray k leaves the centre of `robot` at heading + 2*pi*k/rays.size(); it reads the distance
-  // from the body's surface to the first wall, obstacle or other robot, or exactly range_m when
+  // from the body's surface to the first wall, obstacle, movable object or other robot, or
+  // exactly range_m when
   // there is none within range_m (0 when the robot already touches or overlaps it). Movable
   // objects are tested one by one (a scenario has a handful), the others from the grid.
   void sense(std::span<const RobotBody> bodies, std::size_t robot, double range_m,
