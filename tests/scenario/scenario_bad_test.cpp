@@ -34,7 +34,8 @@ const std::vector<BadCase> kBadCases = {
   // Syntax and shape.
   {"syntax_error.yaml", {}, "5:7", "", "YAML syntax error: end of sequence flow not found"},
   // yaml-cpp 0.7 looped forever on it (found by fuzzing): refused before it is parsed.
-  {"leading_comma.yaml", {}, "2:5", "", "YAML syntax error: a document cannot begin with ','"},
+  {"leading_comma.yaml", {}, "2:5", "", "YAML syntax error: ',' cannot begin a value outside [ ] or { }, nor stand in a tag or an anchor"},
+  {"tagged_leading_comma.yaml", {}, "2:7", "", "YAML syntax error: ',' cannot begin a value outside [ ] or { }, nor stand in a tag or an anchor"},
   {"not_a_mapping.yaml", {}, "2:1", "(top level)", "the file is not a mapping of keys; expected a mapping of scenario keys"},
   {"two_documents.yaml", {}, "17:1", "(top level)", "the file holds 2 YAML documents; expected one document"},
   // Keys.

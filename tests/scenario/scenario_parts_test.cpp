@@ -10,6 +10,7 @@
 #include "scenario/nearest_name.hpp"
 #include "scenario/scalar_rule.hpp"
 #include "scenario/scenario_loader.hpp"
+#include "scenario/yaml_hazard.hpp"
 #include "scenario_test_support.hpp"
 
 namespace swarmnet {
@@ -120,6 +121,34 @@ TEST(ScenarioReference, DocsDescribeEveryKeyWithItsDefault) {
     const std::string fallback = key.required ? "required" : key.fallback;
     EXPECT_NE(line.find(fallback), std::string::npos)
         << key.path << ": the row should show " << fallback << "\n  " << line;
+  }
+}
+
+}  // namespace
+}  // namespace swarmnet
+
+namespace swarmnet {
+namespace {
+
+// yaml-cpp 0.7 loops forever on these (found by fuzzing); they are refused before it parses them,
+// and nothing valid is refused with them.
+TEST(YamlHazard, ACommaOpeningTheFirstNodeOrInItsTagOrAnchorIsFound) {
+  for (const char* text :
+       {",a: 1", "--- ,a", "# c\n  ,x", " ! ,a", "! ,a", " !t ,a", " &x ,a", " !,a", "!\n ,a",
+        "x: 1\n---\n ! ,a", "x: ! ,a", "- ! ,a", "x: ,a", "a:\n  - b\n  - ! ,c", "x: [1]\n ! ,a",
+        "x: 'q'\n ,a", "x: |\n  t\n,a: 1"}) {
+    EXPECT_TRUE(find_yaml_hazard(text).has_value()) << text;
+  }
+  const auto at = find_yaml_hazard("# comment\n !    ,ar\n");
+  ASSERT_TRUE(at.has_value());
+  EXPECT_EQ(at->line, 1);
+  EXPECT_EQ(at->column, 6);  // the comma
+  for (const char* text :
+       {"a: 1", "name: a,b", "x: [1, 2]", "! a, b", "!!str a", "&a x: 1", "# ,\na: 1",
+        "%YAML 1.2\n---\na: 1", "x: [1\n  , 2]", "x: {a: 1,\n  b: 2}", "x: \"a,\n  ,b\"",
+        "notes: |\n  , text\n  ,more\ny: 1", "'a,b': 1", "x: 'don''t, ok'", "x: [a, [b, c]]",
+        "- [1, 2]\n- {a: [3,4]}", "x: \"q\\\", ,\"", "x: a # ,b"}) {
+    EXPECT_FALSE(find_yaml_hazard(text).has_value()) << text;
   }
 }
 

@@ -210,8 +210,8 @@ Scenario load_text(const std::string& text, const std::string& origin,
     YAML::Mark mark;
     mark.line = hazard->line;
     mark.column = hazard->column;
-    throw ScenarioError({problems.locate(KeyPath{}, mark) +
-                         ": YAML syntax error: a document cannot begin with ','"});
+    throw ScenarioError(
+        {problems.locate(KeyPath{}, mark) + ": YAML syntax error: " + kYamlHazardProblem});
   }
   try {
     documents = YAML::LoadAll(text);

@@ -1,6 +1,9 @@
-// Inputs that make Debian's yaml-cpp (0.7) loop forever while allocating, found by fuzzing: a
-// document whose first token is ',' (",a: 1", "--- ,a", a comment and then "  ,x"). They are
-// refused before yaml-cpp sees them, as the syntax errors they are.
+// Inputs that make Debian's yaml-cpp (0.7) loop forever while allocating, found by fuzzing: a ','
+// where a node begins outside [ ] and { } (",a: 1", "--- ,a", a comment and then "  ,x"), also
+// after a tag or an anchor (" ! ,a", " &x ,a", "- ! ,a") or inside one (" !,a"). They are
+// refused before yaml-cpp sees them, as the syntax errors they are: in YAML a plain scalar cannot
+// begin with ',', nor may a tag or an anchor hold one. (The one valid text refused with them: a
+// plain scalar continued on a line that begins with ','; quote such a value.)
 #pragma once
 
 #include <optional>
@@ -12,6 +15,10 @@ struct TextPosition {
   int line = 0;    // 0-based, as YAML::Mark
   int column = 0;  // 0-based
 };
+
+// What is wrong with such a text, for the syntax error that refuses it.
+inline constexpr const char* kYamlHazardProblem =
+    "',' cannot begin a value outside [ ] or { }, nor stand in a tag or an anchor";
 
 // Where `text` holds such a hazard, if it does.
 std::optional<TextPosition> find_yaml_hazard(std::string_view text);
