@@ -133,10 +133,29 @@ namespace {
 // yaml-cpp 0.7 loops forever on these (found by fuzzing); they are refused before it parses them,
 // and nothing valid is refused with them.
 TEST(YamlHazard, ACommaOpeningTheFirstNodeOrInItsTagOrAnchorIsFound) {
-  for (const char* text :
-       {",a: 1", "--- ,a", "# c\n  ,x", " ! ,a", "! ,a", " !t ,a", " &x ,a", " !,a", "!\n ,a",
-        "x: 1\n---\n ! ,a", "x: ! ,a", "- ! ,a", "x: ,a", "a:\n  - b\n  - ! ,c", "x: [1]\n ! ,a",
-        "x: 'q'\n ,a", "x: |\n  t\n,a: 1"}) {
+  for (const char* text : {",a: 1",
+                           "--- ,a",
+                           "# c\n  ,x",
+                           " ! ,a",
+                           "! ,a",
+                           " !t ,a",
+                           " &x ,a",
+                           " !,a",
+                           "!\n ,a",
+                           "x: 1\n---\n ! ,a",
+                           "x: ! ,a",
+                           "- ! ,a",
+                           "x: ,a",
+                           "a:\n  - b\n  - ! ,c",
+                           "x: [1]\n ! ,a",
+                           "x: 'q'\n ,a",
+                           "x: |\n  t\n,a: 1",
+                           "  \"   ,a\n b\n  \"   ,c",
+                           "x: \"a\" ,b",
+                           "x: [1] ,b",
+                           "x: *a ,b",
+                           "x: *a,b",
+                           "x: | ,a"}) {
     EXPECT_TRUE(find_yaml_hazard(text).has_value()) << text;
   }
   const auto at = find_yaml_hazard("# comment\n !    ,ar\n");

@@ -45,6 +45,9 @@ class HazardScanner {
           ++at;  // '' inside a single-quoted scalar
         } else if (c == quote_) {
           quote_ = 0;
+          // After a quoted scalar only ':' or a comment may follow in block context, so a ','
+          // there is the hazard too.
+          if (flow_depth_ == 0) node_may_begin_ = true;
         }
         continue;
       }
@@ -57,7 +60,7 @@ class HazardScanner {
       }
       if (node_may_begin_) {
         if (c == ',' && flow_depth_ == 0) return TextPosition{line, static_cast<int>(at)};
-        if (c == '!' || c == '&') {  // a tag or an anchor: the node itself follows
+        if (c == '!' || c == '&' || c == '*') {  // a tag, an anchor (the node follows) or an alias
           for (; at + 1 < row.size() && !is_blank(row[at + 1]); ++at) {
             if (row[at + 1] == ',' && flow_depth_ == 0) {
               return TextPosition{line, static_cast<int>(at + 1)};
@@ -67,8 +70,11 @@ class HazardScanner {
         }
         if (is_indicator(row, at)) continue;
         if (flow_depth_ == 0 && (c == '|' || c == '>')) {
-          block_scalar_indent_ = indent;
-          return std::nullopt;  // the header's rest; the text follows on the next lines
+          block_scalar_indent_ = indent;  // its text follows on the next lines
+          for (++at; at < row.size() && row[at] != '#'; ++at) {
+            if (row[at] == ',') return TextPosition{line, static_cast<int>(at)};
+          }
+          return std::nullopt;
         }
         if (flow_depth_ == 0 && at == 0 && c == '%') return std::nullopt;  // a directive
         node_may_begin_ = false;
@@ -81,7 +87,8 @@ class HazardScanner {
         ++flow_depth_;
         node_may_begin_ = true;
       } else if ((c == ']' || c == '}') && flow_depth_ > 0) {
-        --flow_depth_;
+        // Back in block context after a flow collection, only ':' or a comment may follow.
+        if (--flow_depth_ == 0) node_may_begin_ = true;
       } else if (c == ',' && flow_depth_ > 0) {
         node_may_begin_ = true;
       } else if (c == ':' && (at + 1 == row.size() || is_blank(row[at + 1]) || flow_depth_ > 0)) {

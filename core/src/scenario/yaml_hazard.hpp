@@ -1,6 +1,7 @@
 // Inputs that make Debian's yaml-cpp (0.7) loop forever while allocating, found by fuzzing: a ','
 // where a node begins outside [ ] and { } (",a: 1", "--- ,a", a comment and then "  ,x"), also
-// after a tag or an anchor (" ! ,a", " &x ,a", "- ! ,a") or inside one (" !,a"). They are
+// after a tag or an anchor (" ! ,a", " &x ,a", "- ! ,a") or inside one (" !,a"), or after a
+// quoted scalar, a flow collection or an alias ("\"a\" ,b", "[1] ,b", "*a ,b"). They are
 // refused before yaml-cpp sees them, as the syntax errors they are: in YAML a plain scalar cannot
 // begin with ',', nor may a tag or an anchor hold one. (The one valid text refused with them: a
 // plain scalar continued on a line that begins with ','; quote such a value.)
