@@ -7,6 +7,7 @@
 #include "experiments/captured_command.hpp"
 #include "outputs/atomic_file.hpp"
 #include "outputs/run_error.hpp"
+#include "outputs/text_file.hpp"
 
 namespace swarmnet {
 
@@ -34,14 +35,6 @@ void check_one_line(const std::string& what, const std::string& text) {
 
 std::filesystem::path tasks_file(const std::filesystem::path& sweep_dir, int number) {
   return slurm_directory(sweep_dir) / ("submit-" + std::to_string(number) + ".tasks");
-}
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw RunError("cannot read " + path.string());
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 }  // namespace
@@ -117,7 +110,7 @@ std::vector<SlurmSubmission> read_submissions(const std::filesystem::path& sweep
   std::vector<SlurmSubmission> submissions;
   const auto record = slurm_directory(sweep_dir) / "jobs";
   if (!std::filesystem::exists(record)) return submissions;
-  std::istringstream lines(read_text(record));
+  std::istringstream lines(read_text_file(record));
   std::string line;
   while (std::getline(lines, line)) {
     if (line.empty()) continue;
@@ -126,7 +119,7 @@ std::vector<SlurmSubmission> read_submissions(const std::filesystem::path& sweep
     if (!(fields >> submission.number >> submission.job_id)) {
       throw RunError(record.string() + ": not a submission record: " + line);
     }
-    std::istringstream ids(read_text(tasks_file(sweep_dir, submission.number)));
+    std::istringstream ids(read_text_file(tasks_file(sweep_dir, submission.number)));
     std::string id;
     while (std::getline(ids, id)) {
       if (!id.empty()) submission.runs.push_back(id);

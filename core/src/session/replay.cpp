@@ -13,6 +13,7 @@
 #include "outputs/positions_trace.hpp"
 #include "outputs/run_error.hpp"
 #include "outputs/run_summary.hpp"
+#include "outputs/text_file.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "protocol/step_data.hpp"
 #include "scenario/scenario_loader.hpp"
@@ -20,14 +21,6 @@
 namespace swarmnet {
 
 namespace {
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw RunError("cannot open " + path.string());
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 struct TrafficRow {
   std::uint64_t step = 0;
@@ -99,7 +92,7 @@ ReplayOutcome replay_network(const ReplayInputs& inputs, const std::filesystem::
   const auto wall_start = std::chrono::steady_clock::now();
   PluginLoader loader;
   const Scenario scenario =
-      load_scenario_text(read_text(inputs.scenario), inputs.scenario.string(), loader);
+      load_scenario_text(read_text_file(inputs.scenario), inputs.scenario.string(), loader);
   const PositionsTrace positions = read_positions_trace(inputs.positions);
   const std::vector<TrafficRow> traffic = read_traffic(inputs.traffic);
   const SimTime step = from_seconds(scenario.step_s);
