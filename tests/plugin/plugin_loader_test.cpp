@@ -81,10 +81,14 @@ class RecordingRobot final : public RobotContext {
   [[nodiscard]] std::span<const double> proximity() const override { return {}; }
   [[nodiscard]] double proximity_range_m() const override { return 0.3; }
   [[nodiscard]] std::span<const ReceivedMessage> inbox() const override { return {}; }
+  [[nodiscard]] std::span<const double> reading(std::string_view /*name*/) const override {
+    return {};
+  }
   void set_wheel_speeds(double /*left_mps*/, double /*right_mps*/) override {}
   std::uint64_t send(RobotId /*destination*/, std::span<const std::byte> /*payload*/) override {
     return 0;
   }
+  void request(std::string_view /*name*/, std::span<const double> /*args*/) override {}
   void record(std::string_view metric, double value) override {
     records.emplace_back(std::string(metric), value);
   }

@@ -55,6 +55,10 @@ class RobotContext {
   [[nodiscard]] virtual std::uint16_t port() const = 0;
   // Messages delivered to this robot's port() since its previous step, in delivery order.
   [[nodiscard]] virtual std::span<const ReceivedMessage> inbox() const = 0;
+  // A reading that one of the scenario's world plugins offers this robot (swarmnet/world.hpp),
+  // laid out as that plugin documents. Valid until the next call of reading(). Throws
+  // std::invalid_argument for a name no world of the scenario offers.
+  [[nodiscard]] virtual std::span<const double> reading(std::string_view name) const = 0;
 
   // Actuators. Wheel speeds are clamped to +/- max_speed_mps().
   virtual void set_wheel_speeds(double left_mps, double right_mps) = 0;
@@ -63,6 +67,10 @@ class RobotContext {
   // kMaxPayloadBytes is refused with std::invalid_argument; a message beyond the swarm's
   // kMaxMessagesPerRobotStep x robots in one step with std::length_error.
   virtual std::uint64_t send(RobotId destination, std::span<const std::byte> payload) = 0;
+
+  // Asks the world plugin that offers request `name` for it (swarmnet/world.hpp). Throws
+  // std::invalid_argument for a name no world offers, or arguments the world refuses.
+  virtual void request(std::string_view name, std::span<const double> args) = 0;
 
   // Adds one observation of a named metric; summary.json reports count, sum, mean, min and max.
   virtual void record(std::string_view metric, double value) = 0;

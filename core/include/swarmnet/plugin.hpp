@@ -27,10 +27,10 @@ namespace swarmnet {
 
 // Bumped whenever a change to any SDK header changes the layout or the virtual tables that a
 // plugin and the kernel share. 3: RobotContext's ports, axle and arena; Physics::object_poses and
-// Arena::objects.
-inline constexpr std::uint32_t kAbiVersion = 3;
+// Arena::objects. 4: world plugins, RobotContext's readings and requests.
+inline constexpr std::uint32_t kAbiVersion = 4;
 
-enum class PluginKind : std::uint8_t { physics, propagation, mac, routing, controller };
+enum class PluginKind : std::uint8_t { physics, propagation, mac, routing, controller, world };
 
 inline const char* to_string(PluginKind kind) {
   switch (kind) {
@@ -44,6 +44,8 @@ inline const char* to_string(PluginKind kind) {
       return "routing";
     case PluginKind::controller:
       return "controller";
+    case PluginKind::world:
+      return "world";
   }
   return "?";
 }

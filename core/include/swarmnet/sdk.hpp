@@ -20,3 +20,4 @@
 #include "swarmnet/units.hpp"
 #include "swarmnet/vector.hpp"
 #include "swarmnet/wifi_ofdm.hpp"
+#include "swarmnet/world.hpp"

@@ -25,6 +25,11 @@ class FakeRobotContext final : public RobotContext {
     std::vector<std::byte> payload;
     SimTime at;
   };
+  struct Request {
+    std::string name;
+    std::vector<double> args;
+    SimTime at;
+  };
 
   // Sensors: set by the test.
   RobotId robot_id = 0;
@@ -40,10 +45,13 @@ class FakeRobotContext final : public RobotContext {
   double range_m = 1.0;
   std::vector<double> rays = std::vector<double>(24, 1.0);
   std::vector<ReceivedMessage> received;
+  // World readings by name, as a world plugin would offer them (swarmnet/world.hpp).
+  std::map<std::string, std::vector<double>, std::less<>> readings;
   // Actuators: read by the test.
   double left_mps = 0.0;
   double right_mps = 0.0;
   std::vector<Sent> sent;
+  std::vector<Request> requests;  // in the order made
   std::map<std::string, std::vector<double>, std::less<>> recorded;  // metric -> observations
 
   [[nodiscard]] RobotId id() const override { return robot_id; }
@@ -59,6 +67,16 @@ class FakeRobotContext final : public RobotContext {
   [[nodiscard]] std::span<const double> proximity() const override { return rays; }
   [[nodiscard]] double proximity_range_m() const override { return range_m; }
   [[nodiscard]] std::span<const ReceivedMessage> inbox() const override { return received; }
+  [[nodiscard]] std::span<const double> reading(std::string_view name) const override {
+    const auto it = readings.find(name);
+    if (it == readings.end()) {
+      throw std::invalid_argument("no world offers the reading '" + std::string(name) + "'");
+    }
+    return it->second;
+  }
+  void request(std::string_view name, std::span<const double> args) override {
+    requests.push_back({std::string(name), {args.begin(), args.end()}, time});
+  }
   void set_wheel_speeds(double left, double right) override {
     left_mps = std::clamp(left, -max_speed, max_speed);
     right_mps = std::clamp(right, -max_speed, max_speed);
