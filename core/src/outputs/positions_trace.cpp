@@ -35,7 +35,7 @@ T get_le(const char* in) {
 
 PositionsTraceWriter::PositionsTraceWriter(std::ostream& out, std::uint32_t robots,
                                            std::uint64_t steps, SimTime step)
-    : out_(out) {
+    : out_(out), declared_steps_(steps) {
   std::array<char, kPositionsHeaderBytes> header{};
   std::memcpy(header.data(), kMagic.data(), kMagic.size());
   put_le(header.data() + 8, kPositionsTraceVersion);
@@ -54,6 +54,18 @@ void PositionsTraceWriter::sample(std::span<const Vec2> positions) {
     out += 16;
   }
   out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+  ++written_steps_;
+}
+
+void PositionsTraceWriter::finish() {
+  if (written_steps_ == declared_steps_) return;
+  std::array<char, 8> steps{};
+  put_le(steps.data(), written_steps_);
+  const std::streampos end = out_.tellp();
+  out_.seekp(16);
+  out_.write(steps.data(), static_cast<std::streamsize>(steps.size()));
+  out_.seekp(end);
+  if (!out_) throw RunError("cannot record the step count in the positions trace's header");
 }
 
 PositionsTrace read_positions_trace(const std::filesystem::path& path) {

@@ -29,13 +29,19 @@ inline constexpr std::size_t kPositionsHeaderBytes = 32;
 
 class PositionsTraceWriter {
  public:
-  // Writes the header; then call sample() exactly `steps` times with `robots` positions each.
+  // Writes the header; then call sample() at most `steps` times with `robots` positions each, and
+  // finish().
   PositionsTraceWriter(std::ostream& out, std::uint32_t robots, std::uint64_t steps, SimTime step);
   void sample(std::span<const Vec2> positions);
+  // When fewer than `steps` samples were written (a world plugin ended the run early), puts their
+  // number into the header, so that the file is whole for what it holds. `out` must be seekable.
+  void finish();
 
  private:
   std::ostream& out_;
   std::vector<char> buffer_;
+  std::uint64_t declared_steps_ = 0;
+  std::uint64_t written_steps_ = 0;
 };
 
 struct PositionsTrace {

@@ -69,7 +69,8 @@ Json network_report_json(const NetworkReport& report) {
 
 Json build_summary(const SummaryInputs& in) {
   const Scenario& scenario = *in.scenario;
-  const double sim_s = static_cast<double>(scenario.step_count()) * scenario.step_s;
+  const std::uint64_t steps = in.steps.value_or(scenario.step_count());
+  const double sim_s = static_cast<double>(steps) * scenario.step_s;
   const RunTimings& t = in.timings;
   Json s;
   s["scenario"] = scenario.name;
@@ -82,9 +83,15 @@ Json build_summary(const SummaryInputs& in) {
   }
   s["seed"] = scenario.seed;
   s["robots"] = scenario.robots.count;
+  s["duration_s"] = scenario.duration_s;  // the cap, when a world ends the run earlier
   s["sim_time_s"] = sim_s;
   s["step_s"] = scenario.step_s;
-  s["steps"] = scenario.step_count();
+  s["steps"] = steps;
+  if (in.ended) {
+    s["ended"] = {{"by", in.ended->by_world ? "task_done" : "duration"},
+                  {"world", in.ended->by_world ? Json(*in.ended->by_world) : Json(nullptr)},
+                  {"at_s", sim_s}};
+  }
   if (!in.replay_of) s["sync"] = to_string(scenario.sync);
   if (in.transport) s["transport"] = *in.transport;
   s["wall_s"] = t.wall_s;
@@ -101,6 +108,7 @@ Json build_summary(const SummaryInputs& in) {
   if (t.transport_cpu_s) s["transport_share"] = t.wall_s > 0 ? *t.transport_cpu_s / t.wall_s : 0.0;
   s.update(network_report_json(*in.network));
   if (in.controllers != nullptr) s["controllers"] = controllers_json(*in.controllers);
+  if (in.world != nullptr) s["world"] = controllers_json(*in.world);
   s["outputs"] = outputs_json(scenario, in.replay_of.has_value());
   return s;
 }

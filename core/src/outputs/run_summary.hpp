@@ -38,6 +38,16 @@ struct SummaryInputs {
   const NetworkReport* network = nullptr;
   // Controllers' metrics by name (a run only).
   const ControllerMetrics* controllers = nullptr;
+  // World plugins' metrics by name (a run with world plugins only).
+  const ControllerMetrics* world = nullptr;
+  // Steps simulated, when not the scenario's step_count() (a world ended the run early, or a
+  // replay of such a run).
+  std::optional<std::uint64_t> steps;
+  // How a run ended: by a world plugin's task_done() (named), or at duration_s (none).
+  struct Ended {
+    std::optional<std::string> by_world;
+  };
+  std::optional<Ended> ended;
 };
 
 // The network half's part of summary.json: packets, pdr, delay_s, hops_mean, mac, routing,

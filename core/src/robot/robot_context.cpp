@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "robot/world_plugins.hpp"
+
 namespace swarmnet {
 
 namespace {
@@ -53,6 +55,14 @@ std::uint64_t WorldRobotContext::send(RobotId destination, std::span<const std::
   state_->outbox->push_back(AppMessage{message_id, id_, destination, state_->current_port,
                                        Payload(payload.begin(), payload.end())});
   return message_id;
+}
+
+std::span<const double> WorldRobotContext::reading(std::string_view name) const {
+  return state_->worlds->read(id_, name);
+}
+
+void WorldRobotContext::request(std::string_view name, std::span<const double> args) {
+  state_->worlds->request(id_, name, args);
 }
 
 void WorldRobotContext::record(std::string_view metric, double value) {

@@ -14,6 +14,8 @@
 
 namespace swarmnet {
 
+class WorldPlugins;
+
 // Messages delivered to one port of one robot in the current step. Slots are reused from step to
 // step (payload buffers keep their capacity), so filling an inbox does not allocate once warmed up.
 struct Inbox {
@@ -42,6 +44,9 @@ struct RobotWorldState {
   std::uint64_t next_message_id = 0;
   std::vector<AppMessage>* outbox = nullptr;  // where send() appends
   ControllerMetrics metrics;
+  // Robots a world switched off (1): their controllers no longer run (swarmnet/world.hpp).
+  std::vector<std::uint8_t> switched_off;
+  WorldPlugins* worlds = nullptr;  // answers readings and requests; owned by the world
 };
 
 // The sensors and actuators of one robot.
@@ -64,6 +69,7 @@ class WorldRobotContext final : public RobotContext {
   [[nodiscard]] std::span<const ReceivedMessage> inbox() const override {
     return state_->inboxes[id_ * state_->ports.size() + state_->current_port_index].messages();
   }
+  [[nodiscard]] std::span<const double> reading(std::string_view name) const override;
 
   // Clamps each speed to +/- max_speed_mps; a NaN speed counts as 0 (stopping is the safe
   // reading of a broken command, and a NaN would poison the physics).
@@ -71,6 +77,7 @@ class WorldRobotContext final : public RobotContext {
   // Throws std::invalid_argument for a payload over kMaxPayloadBytes or a destination that is
   // neither a robot id nor kBroadcast.
   std::uint64_t send(RobotId destination, std::span<const std::byte> payload) override;
+  void request(std::string_view name, std::span<const double> args) override;
   void record(std::string_view metric, double value) override;
 
  private:

@@ -40,6 +40,7 @@ struct RobotSettings {
   Arena arena;
   RobotsConfig robots;
   PluginChoice physics;
+  std::vector<PluginChoice> worlds;  // world plugins, run in this order (swarmnet/world.hpp)
 };
 
 }  // namespace swarmnet

@@ -64,6 +64,9 @@ RobotWorld::RobotWorld(const RobotSettings& settings, PluginLoader& loader) {
   physics_args.shared_seed = physics_args.seed;
   physics_ = loader.create<Physics>(settings.physics.name, physics_args);
   physics_->setup(settings.arena, state_.bodies);
+  state_.switched_off.assign(count, 0);
+  worlds_.emplace(state_, settings.worlds, settings.seed, loader);
+  state_.worlds = &*worlds_;
 
   controllers_per_robot_ = robots.controllers.size();
   controllers_.reserve(count * controllers_per_robot_);
@@ -84,6 +87,7 @@ RobotWorld::RobotWorld(const RobotSettings& settings, PluginLoader& loader) {
 
   sense();
   state_.now = kTimeZero;
+  worlds_->setup();
   const OutboxScope outbox(state_, sent_in_init_);
   for (std::size_t r = 0; r < count; ++r) {
     for (std::size_t c = 0; c < controllers_per_robot_; ++c) {
@@ -147,9 +151,15 @@ void RobotWorld::step(std::span<const Delivery> deliveries, std::vector<AppMessa
     sent_in_init_.clear();
   }
   state_.now = now();
+  worlds_->pre_step();
   {
     const OutboxScope outbox(state_, sent);
     for (std::size_t r = 0; r < contexts_.size(); ++r) {
+      if (state_.switched_off[r] != 0) {
+        state_.bodies[r].left_mps = 0.0;
+        state_.bodies[r].right_mps = 0.0;
+        continue;
+      }
       for (std::size_t c = 0; c < controllers_per_robot_; ++c) {
         enter(c);
         controllers_[r * controllers_per_robot_ + c]->control_step(contexts_[r]);
@@ -159,6 +169,8 @@ void RobotWorld::step(std::span<const Delivery> deliveries, std::vector<AppMessa
   physics_->step(state_.step_s, state_.bodies);
   sense();
   ++step_index_;
+  state_.now = now();
+  worlds_->post_step();
 }
 
 }  // namespace swarmnet

@@ -3,7 +3,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "plugin/plugin_instance.hpp"
@@ -12,6 +14,7 @@
 #include "robot/controller_metrics.hpp"
 #include "robot/robot_context.hpp"
 #include "robot/robot_settings.hpp"
+#include "robot/world_plugins.hpp"
 #include "swarmnet/controller.hpp"
 #include "swarmnet/physics.hpp"
 
@@ -19,15 +22,17 @@ namespace swarmnet {
 
 class RobotWorld {
  public:
-  // Places the robots (robot_placement.hpp), creates the physics engine and one instance of each
-  // controller entry per robot, sets up the physics, senses, and calls every controller's init()
-  // (robots in ascending id, each robot's controllers in scenario order) at time 0. Messages sent
-  // from init() go out with the first step. Throws what placement, the loader, the physics'
-  // setup() or a controller's init() throws.
+  // Places the robots (robot_placement.hpp), creates the physics engine, the world plugins and
+  // one instance of each controller entry per robot, sets up the physics, senses, sets up the
+  // worlds (scenario order), and calls every controller's init() (robots in ascending id, each
+  // robot's controllers in scenario order) at time 0. Messages sent from init() go out with the
+  // first step. Throws what placement, the loader, the physics' setup(), a world's setup() or a
+  // controller's init() throws.
   //
   // Streams: placement derive_seed(seed, {hash_name("placement")}); physics seed and shared seed
-  // derive_seed(seed, {hash_name("physics")}); controller entry c on robot r
-  // derive_seed(seed, {hash_name("controller"), c, r}), shared derive_seed(seed, {.., c}).
+  // derive_seed(seed, {hash_name("physics")}); world w derive_seed(seed, {hash_name("world"), w});
+  // controller entry c on robot r derive_seed(seed, {hash_name("controller"), c, r}), shared
+  // derive_seed(seed, {.., c}).
   RobotWorld(const RobotSettings& settings, PluginLoader& loader);
 
   RobotWorld(const RobotWorld&) = delete;
@@ -53,13 +58,22 @@ class RobotWorld {
   [[nodiscard]] std::span<const double> proximity(RobotId robot) const;
 
   // Runs one step at now(): puts `deliveries` into the receivers' inboxes (keeping their order;
-  // a receiver that is not a robot is ignored), runs every robot's controllers (robots in
-  // ascending id, controllers in scenario order), steps the physics by step_s(), senses the
-  // proximity rings for the next step, and advances time. Appends the messages sent during the
-  // step to `sent`, ids ascending from a world-wide counter starting at 0.
+  // a receiver that is not a robot is ignored), runs the worlds' pre_step(), every robot's
+  // controllers (robots in ascending id, controllers in scenario order; a switched-off robot's
+  // are skipped), steps the physics by step_s(), senses the proximity rings for the next step,
+  // advances time and runs the worlds' post_step(). Appends the messages sent during the step to
+  // `sent`, ids ascending from a world-wide counter starting at 0.
   void step(std::span<const Delivery> deliveries, std::vector<AppMessage>& sent);
 
+  // True once a world plugin said its task is done: the run ends after the step that did it.
+  [[nodiscard]] bool task_done() const { return worlds_->done_by().has_value(); }
+  // The world plugin whose task_done() ended the run, if one did.
+  [[nodiscard]] std::optional<std::string> done_by() const { return worlds_->done_by(); }
+  // Calls every world's end(); once, after the last step.
+  void end_worlds() { worlds_->end(); }
+
   [[nodiscard]] const ControllerMetrics& controller_metrics() const { return state_.metrics; }
+  [[nodiscard]] const ControllerMetrics& world_metrics() const { return worlds_->metrics(); }
 
  private:
   // Puts each delivery into its receiver's inbox for the port the message was sent from.
@@ -74,6 +88,7 @@ class RobotWorld {
   SimTime step_length_{};
   std::uint64_t step_index_ = 0;
   PluginInstance<Physics> physics_;
+  std::optional<WorldPlugins> worlds_;
   std::size_t controllers_per_robot_ = 0;
   std::vector<PluginInstance<Controller>> controllers_;  // robot r's entry c at r * per_robot + c
   std::vector<std::uint16_t> entry_ports_;               // controller entry c's port

@@ -27,6 +27,7 @@ RobotSettings Scenario::robot_settings() const {
   settings.arena = arena;
   settings.robots = robots;
   settings.physics = physics;
+  settings.worlds = worlds;
   return settings;
 }
 

@@ -39,6 +39,7 @@ struct Scenario {
   std::vector<std::filesystem::path> plugin_paths;  // searched before anything else
   Arena arena;
   RobotsConfig robots;
+  std::vector<PluginChoice> worlds;  // the `world` list, in order
   PluginChoice physics;
   NetworkConfig network;
   OutputConfig output;

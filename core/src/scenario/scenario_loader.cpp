@@ -126,6 +126,7 @@ Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>
     s.robots.controller_ports.push_back(entry["port"].as<std::uint16_t>());
   }
 
+  s.worlds = plugin_list("world", tree["world"].size());
   s.physics = plugin("physics");
 
   const YAML::Node network = tree["network"];

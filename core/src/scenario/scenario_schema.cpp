@@ -178,6 +178,10 @@ const KeySpec& scenario_schema() {
                       "Controllers every robot runs, in this order, on every step.")
           .at_least_items(1).need(),
     }),
+    plugin_list_key("world", PluginKind::world,
+                    "World plugins (loop functions, swarmnet/world.hpp): task state the robots "
+                    "act in, run before and after every step in this order; one may end the run "
+                    "when its task is done.").defaults("[]"),
     plugin_key("physics", PluginKind::physics, "Moves the bodies and resolves collisions.")
         .plugin_default("kinematic2d"),
     map_key("network", "The network half: one node per robot.", {

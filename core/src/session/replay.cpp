@@ -96,8 +96,9 @@ ReplayOutcome replay_network(const ReplayInputs& inputs, const std::filesystem::
   const PositionsTrace positions = read_positions_trace(inputs.positions);
   const std::vector<TrafficRow> traffic = read_traffic(inputs.traffic);
   const SimTime step = from_seconds(scenario.step_s);
+  // Fewer steps than the scenario's: a world plugin ended the run when its task was done.
   if (positions.robots != scenario.robots.count || positions.step != step ||
-      positions.steps != scenario.step_count()) {
+      positions.steps > scenario.step_count()) {
     throw RunError(inputs.positions.string() + " (" + std::to_string(positions.robots) +
                    " robots, " + std::to_string(positions.steps) + " steps of " +
                    std::to_string(positions.step.count()) + " ns) does not match " +
@@ -155,6 +156,7 @@ ReplayOutcome replay_network(const ReplayInputs& inputs, const std::filesystem::
   summary.timings.wall_s = wall_s;
   summary.timings.network_cpu_s = network_cpu;
   summary.network = &report;
+  summary.steps = positions.steps;
   outcome.summary = build_summary(summary);
   write_file_atomically(out_dir / kSummaryFile, outcome.summary.dump(2) + "\n");
   return outcome;

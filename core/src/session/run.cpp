@@ -76,6 +76,7 @@ void log_plugins(RunLog& log, const Scenario& scenario, PluginLoader& loader) {
   };
   log.line("plugins:");
   describe(scenario.physics);
+  for (const auto& world : scenario.worlds) describe(world);
   for (const auto& controller : scenario.robots.controllers) describe(controller);
   for (const auto& model : scenario.network.propagation) describe(model);
   describe(scenario.network.mac);
@@ -105,15 +106,18 @@ void handshake(const Scenario& scenario, const std::filesystem::path& run_dir,
     throw PeerLost(r.error);
 }
 
-// Drives the robot half over `channel` for every step; returns the network half's report.
-struct RobotLoopCost {
+// What driving the robot half cost and how far it went.
+struct RobotLoop {
   double transport_cpu_s = 0.0;
+  std::uint64_t steps = 0;  // steps run: the scenario's, or fewer when a world's task was done
 };
 
+// Drives the robot half over `channel` for every step, or until a world plugin's task is done;
+// returns the network half's report.
 NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, StepChannel& channel,
                                MobilityTraceWriter* mobility, PositionsTraceWriter* positions,
                                ObjectTraceWriter* objects, TrafficScheduleWriter* traffic,
-                               ProgressLine& progress, RobotLoopCost& cost) {
+                               ProgressLine& progress, RobotLoop& cost) {
   const std::uint64_t steps = scenario.step_count();
   const std::uint64_t lag = delivery_lag(scenario.sync);
   StepBatch batch;
@@ -157,9 +161,12 @@ NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, Step
     cost.transport_cpu_s += thread_cpu_seconds() - before;
     if (!sent.ok()) throw PeerLost(sent.error);
     progress.update(step + 1);
+    cost.steps = step + 1;
+    if (world.task_done()) break;
   }
   // Windows whose deliveries no robot step will read any more: still simulated and counted.
-  for (std::uint64_t step = steps > lag ? steps - lag : 0; step < steps; ++step) receive(step);
+  const std::uint64_t ran = cost.steps;
+  for (std::uint64_t step = ran > lag ? ran - lag : 0; step < ran; ++step) receive(step);
   if (const ProtocolResult r = channel.send_finish(); !r.ok()) throw PeerLost(r.error);
   NetworkReport report;
   if (const ProtocolResult r = channel.receive_report(report); !r.ok()) throw PeerLost(r.error);
@@ -224,7 +231,7 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
     StepChannel channel(link->transport(), "the network half");
     log.line("transport: " + link->describe());
 
-    RobotLoopCost cost;
+    RobotLoop cost;
     NetworkReport report;
     std::string robot_error;
     bool lost_peer = false;
@@ -266,6 +273,8 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     const double robot_cpu = thread_cpu_seconds() - cpu_start - cost.transport_cpu_s;
 
+    world.end_worlds();
+    if (positions) positions->finish();
     if (mobility_file) mobility_file->commit();
     if (positions_file) positions_file->commit();
     if (objects_file) objects_file->commit();
@@ -279,6 +288,9 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
                        cost.transport_cpu_s + report.transport_cpu_s};
     summary.network = &report;
     summary.controllers = &world.controller_metrics();
+    summary.steps = cost.steps;
+    summary.ended = SummaryInputs::Ended{world.done_by()};
+    if (!scenario.worlds.empty()) summary.world = &world.world_metrics();
     outcome.summary = build_summary(summary);
 
     // Written (and a full disk found) before run.log says the run finished; renamed into place
@@ -286,7 +298,9 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
     AtomicFile summary_file(outcome.dir / kSummaryFile);
     summary_file.stream() << outcome.summary.dump(2) << "\n";
     summary_file.finish();
-    log.line("finished: " + std::to_string(scenario.step_count()) + " steps");
+    const std::optional<std::string> done_by = world.done_by();
+    log.line("finished: " + std::to_string(cost.steps) + " steps" +
+             (done_by ? ", ended by world " + *done_by + ": its task is done" : ""));
     log.commit();
     summary_file.commit();
   } catch (const std::exception& error) {

@@ -51,7 +51,7 @@ class FakeRobotContext final : public RobotContext {
   double left_mps = 0.0;
   double right_mps = 0.0;
   std::vector<Sent> sent;
-  std::vector<Request> requests;  // in the order made
+  std::vector<Request> requests;                                     // in the order made
   std::map<std::string, std::vector<double>, std::less<>> recorded;  // metric -> observations
 
   [[nodiscard]] RobotId id() const override { return robot_id; }

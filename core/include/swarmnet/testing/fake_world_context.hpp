@@ -1,0 +1,61 @@
+// SDK test kit: a WorldContext whose robots the test places and whose effects it reads, for
+// driving a world plugin without a simulation.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "swarmnet/world.hpp"
+
+namespace swarmnet::testing {
+
+class FakeWorldContext final : public WorldContext {
+ public:
+  explicit FakeWorldContext(std::size_t robots, Arena arena = Arena{100.0, 100.0, {}})
+      : world(std::move(arena)),
+        positions(robots, Vec2::Zero()),
+        headings(robots, 0.0),
+        max_speeds(robots, 1.0),
+        off(robots, false) {}
+
+  // The world: set by the test.
+  Arena world;
+  SimTime time{};
+  double step_length_s = 0.1;
+  std::vector<Vec2> positions;
+  std::vector<double> headings;
+  std::vector<double> max_speeds;
+  // Effects: read by the test.
+  std::vector<bool> off;
+  std::map<std::string, std::vector<double>, std::less<>> recorded;  // metric -> observations
+
+  [[nodiscard]] const Arena& arena() const override { return world; }
+  [[nodiscard]] std::size_t robot_count() const override { return positions.size(); }
+  [[nodiscard]] SimTime now() const override { return time; }
+  [[nodiscard]] double step_s() const override { return step_length_s; }
+  [[nodiscard]] Vec2 position(RobotId robot) const override { return positions.at(robot); }
+  [[nodiscard]] double heading_rad(RobotId robot) const override { return headings.at(robot); }
+  [[nodiscard]] double max_speed_mps(RobotId robot) const override { return max_speeds.at(robot); }
+  [[nodiscard]] bool switched_off(RobotId robot) const override { return off.at(robot); }
+  void switch_off(RobotId robot) override { off.at(robot) = true; }
+  void record(std::string_view metric, double value) override {
+    auto it = recorded.find(metric);
+    if (it == recorded.end())
+      it = recorded.emplace(std::string(metric), std::vector<double>{}).first;
+    it->second.push_back(value);
+  }
+
+  // One step of a world plugin as the kernel runs it: pre_step at now, time advances by one
+  // step (the test moves the robots before or after), post_step at the new time.
+  void step(World& plugin) {
+    plugin.pre_step(*this);
+    time += from_seconds(step_length_s);
+    plugin.post_step(*this);
+  }
+};
+
+}  // namespace swarmnet::testing
