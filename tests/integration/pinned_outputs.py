@@ -30,6 +30,11 @@ RUNS = {
     "aodv": ("configs/aodv.yaml", ["--set", "duration_s=10"]),
     # ODE physics (Debian's libode 0.16.2): a change of the plugin or of the library shows here.
     "ode": ("configs/ode.yaml", ["--set", "duration_s=10"]),
+    # The study's task allocation (world plugin, controller, flooding over 802.11a), 10 robots and
+    # 2 events, to the end of the task.
+    "task-allocation": ("configs/paper/task-allocation.yaml",
+                        ["--set", "robots.count=10", "--set", "world.0.params.events=2",
+                         "--set", "output.packet_trace=true"]),
 }
 FILES = ["packets.csv", "positions.bin", "mobility.ns2", "traffic.csv", "summary.json"]
 # Fields of summary.json that measure the machine, not the simulation.
