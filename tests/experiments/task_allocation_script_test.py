@@ -102,7 +102,7 @@ with tempfile.TemporaryDirectory() as tmp:
     # Results whose runs have no task_events fields are refused with the reason.
     bare = os.path.join(tmp, "bare.csv")
     with open(bare, "w") as f:
-        f.write("run_id,seed,status,robots.count,world.0.params.events,name,sim_time_s\n"
+        f.write("run_id,seed,status,robots.count,world.0.params.events,name,duration_s\n"
                 "a,1,ok,20,5,all,400\n")
     done = subprocess.run([sys.executable, script, "--results", bare, "--swarmnet", binary],
                           capture_output=True, text=True)
