@@ -39,7 +39,7 @@ const std::vector<BadCase> kBadCases = {
   {"not_a_mapping.yaml", {}, "2:1", "(top level)", "the file is not a mapping of keys; expected a mapping of scenario keys"},
   {"two_documents.yaml", {}, "17:1", "(top level)", "the file holds 2 YAML documents; expected one document"},
   // Keys.
-  {"unknown_top_level_key.yaml", {}, "16:1", "colour", "unknown key; expected one of name, seed, duration_s, step_s, sync, plugin_paths, arena, robots, physics, network, output"},
+  {"unknown_top_level_key.yaml", {}, "16:1", "colour", "unknown key; expected one of name, seed, duration_s, step_s, sync, plugin_paths, arena, robots, world, physics, network, output"},
   {"unknown_nested_key.yaml", {}, "7:3", "arena.heigth_m", "unknown key (did you mean 'height_m'?); expected one of width_m, height_m, obstacles, objects"},
   {"duplicate_key.yaml", {}, "7:3", "arena.width_m", "is given twice (first at line 5:3); expected each key once"},
   {"missing_required_key.yaml", {}, "2:1", "duration_s", "missing required key; expected real > 0 (s)"},

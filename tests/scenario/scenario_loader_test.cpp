@@ -273,7 +273,7 @@ TEST(ScenarioLoader, ResolvedScenarioHasEveryKeyInAFixedOrder) {
   for (const auto& entry : r) top.push_back(entry.first.as<std::string>());
   EXPECT_EQ(
       top, (std::vector<std::string>{"name", "seed", "duration_s", "step_s", "sync", "plugin_paths",
-                                     "arena", "robots", "physics", "network", "output"}));
+                                     "arena", "robots", "world", "physics", "network", "output"}));
   EXPECT_EQ(r["step_s"].as<std::string>(), "0.1");
   EXPECT_EQ(r["robots"]["radius_m"].as<std::string>(), "0.085");
   EXPECT_EQ(r["robots"]["placement"]["region"]["x_max_m"].as<std::string>(), "100");
