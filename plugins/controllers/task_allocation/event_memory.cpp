@@ -42,20 +42,36 @@ bool EventMemory::apply(const TaskMessage& message, RobotId sender) {
   }
   switch (message.type) {
     case MessageType::status:
+      changed |=
+          upsert(id, message.event_position, message.required, message.skill, message.waiting);
+      changed |= remove_going_elsewhere(sender, std::nullopt);
+      if (message.waiting < message.required) changed |= reopen(id);
+      break;
     case MessageType::abandoning:
       changed |=
           upsert(id, message.event_position, message.required, message.skill, message.waiting);
-      changed |= remove_going(id, sender);
+      changed |= remove_going_elsewhere(sender, std::nullopt);
       break;
     case MessageType::going:
       changed |= add_going(id, sender);
+      changed |= remove_going_elsewhere(sender, id);
       break;
     case MessageType::cancelled:
       changed |= remove_going(id, sender);
       break;
     case MessageType::handling:
       changed |= mark_handled(id);
+      changed |= remove_going_elsewhere(sender, std::nullopt);
       break;
+  }
+  return changed;
+}
+
+bool EventMemory::remove_going_elsewhere(RobotId robot, std::optional<std::uint32_t> except) {
+  bool changed = false;
+  for (auto& [id, event] : events_) {
+    if (except && id == *except) continue;
+    changed |= event.going.erase(robot) > 0;
   }
   return changed;
 }
@@ -76,6 +92,13 @@ bool EventMemory::set_waiting(std::uint32_t id, std::uint32_t waiting) {
   KnownEvent* event = find_mutable(id);
   if (event == nullptr || event->waiting == waiting) return false;
   event->waiting = waiting;
+  return true;
+}
+
+bool EventMemory::reopen(std::uint32_t id) {
+  KnownEvent* event = find_mutable(id);
+  if (event == nullptr || !event->handled) return false;
+  event->handled = false;
   return true;
 }
 

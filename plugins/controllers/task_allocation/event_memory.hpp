@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <optional>
 
 #include "swarmnet/ids.hpp"
 #include "swarmnet/vector.hpp"
@@ -44,11 +45,14 @@ class EventMemory {
 
   // Applies a message from robot `sender` (its originator). Every message carries the event's
   // fields, so a message about an unknown event stores it (with the message's waiting count).
-  //   S: sets waiting, removes the sender from the going set (it now waits by the event);
-  //   G: adds the sender to the going set;
+  //   S: sets waiting, removes the sender from every going set (it now waits by the event); an S
+  //      whose waiting count is below the required one reopens a handled event (its service
+  //      stalled: a robot left or ran flat);
+  //   G: adds the sender to the going set, and removes it from every other one (a robot goes to
+  //      one event at a time, so a lost C does not leave it counted elsewhere);
   //   C: removes the sender from the going set;
-  //   H: marks the event handled;
-  //   A: sets waiting, removes the sender from the going set.
+  //   H: marks the event handled, removes the sender from every going set (it is there);
+  //   A: sets waiting, removes the sender from every going set.
   // G, C and H leave the waiting count of a known event alone: only S and A are about it.
   // Returns whether the memory changed.
   bool apply(const TaskMessage& message, RobotId sender);
@@ -59,6 +63,8 @@ class EventMemory {
   bool remove_going(std::uint32_t id, RobotId robot);
   bool set_waiting(std::uint32_t id, std::uint32_t waiting);
   bool mark_handled(std::uint32_t id);
+  // Clears the handled flag: the event needs robots again.
+  bool reopen(std::uint32_t id);
 
   void clear() { *this = EventMemory{}; }
 
@@ -66,6 +72,8 @@ class EventMemory {
 
  private:
   KnownEvent* find_mutable(std::uint32_t id);
+  // Removes `robot` from the going set of every event but `except` (none: every event).
+  bool remove_going_elsewhere(RobotId robot, std::optional<std::uint32_t> except);
 
   std::map<std::uint32_t, KnownEvent> events_;
   std::uint64_t next_stamp_ = 0;

@@ -37,16 +37,20 @@ PluginInfo TaskAllocation::info() {
       "and robots waiting, and the sender's coordinates, in a 43-byte little-endian record with "
       "a leading type byte; a payload of another size, an unknown type or a non-finite "
       "coordinate is ignored and counted as malformed_messages.\n"
-      "Memory: per event, its fields, the set of robots believed to be going (G adds the "
-      "sender, C removes it, S and A set the waiting count and remove the sender, who now waits "
-      "or left) and a handled flag (H). Any message about an unknown event stores it. Events "
-      "within view also refresh the waiting count of a known event.\n"
+      "Memory: per event, its fields, the set of robots believed to be going and a handled flag. "
+      "G adds the sender to the event's going set and removes it from every other (a robot goes "
+      "to one event at a time, so a lost C does not leave it counted elsewhere); C removes it; "
+      "S, H and A remove it from every going set (it is at the event, or left it); S and A set "
+      "the waiting count; H marks the event handled; an S whose waiting count is below the "
+      "required one reopens a handled event (its service stalled). Any message about an unknown "
+      "event stores it. Events within view also refresh the waiting count of a known event.\n"
       "States: exploring, going(event), waiting(event), to_charger, charging. Every step: the "
       "messages delivered are applied; a low battery sends the robot to the charger; every "
       "event in view not yet known is stored and announced with S, and an exploring robot with "
       "its skill goes to the closest such event that still needs robots (G); then, if the "
-      "memory changed and the robot is exploring or going, the decision rule runs once on the "
-      "memory as it stands after all of the step's messages.\n"
+      "memory changed (a message, a discovery, a waiting count seen in view, or the end of an "
+      "abandoned event's shun) and the robot is exploring or going, the decision rule runs once "
+      "on the memory as it stands after all of the step's messages.\n"
       "Decision rule: candidates are the known, unhandled events with one of the robot's skills "
       "whose required count exceeds waiting plus the going robots other than this one; for the "
       "event the robot itself is going to, only those whose decision it learnt before its own "
@@ -58,11 +62,16 @@ PluginInfo TaskAllocation::info() {
       "abandon_after_s. The rule also runs on leaving an event or the charger.\n"
       "Going: drive to the event; within arrive_radius_m, if the event is still in view, stop, "
       "request join and broadcast S with the waiting count read this step plus one (the reading "
-      "was taken before this robot joined), then wait; if it is no longer in view it was "
+      "was taken before this robot joined), or H instead when that count reaches the required "
+      "one (this robot completes the group: one H per event), then wait; if it is no longer in "
+      "view it was "
       "serviced meanwhile: it is marked handled, C is sent, the rule runs.\n"
       "Waiting: standing still. When 'joined' shows waiting >= required or a positive service "
-      "time, the service has started: unless H was already heard for the event, send H once and "
-      "mark it handled. When 'joined' becomes empty the event was serviced (or the world dropped "
+      "time, the service has started: unless H was already sent or heard for the event, send H "
+      "and mark it handled. If the count drops below the required one and the world's service "
+      "clock restarts, the service stalled: send S with the count (reopening the event for the "
+      "others) and wait again, abandon timer restarted. When 'joined' becomes empty the event was "
+      "serviced (or the world dropped "
       "the join): it is marked handled and the robot explores. Without the service starting "
       "within abandon_after_s of arrival, the robot sends A (waiting less itself), requests "
       "leave and explores.\n"
@@ -159,6 +168,7 @@ void TaskAllocation::control_step(RobotContext& robot) {
   state_.explorer.observe(robot.position());
 
   bool changed = receive(robot);
+  changed |= forget_expired_shuns(robot.now());
 
   const bool in_service = state_.mode == Mode::waiting && state_.service_started;
   if (battery.low && !in_service && state_.mode != Mode::to_charger &&
@@ -211,7 +221,7 @@ bool TaskAllocation::discover(RobotContext& robot, const std::vector<EventSighti
   double closest_m = 0.0;
   for (const EventSighting& seen : in_view) {
     if (state_.memory.contains(seen.id)) {
-      state_.memory.set_waiting(seen.id, seen.waiting);
+      any |= state_.memory.set_waiting(seen.id, seen.waiting);
       continue;
     }
     any = true;
@@ -231,6 +241,12 @@ bool TaskAllocation::discover(RobotContext& robot, const std::vector<EventSighti
     chose = true;
   }
   return any;
+}
+
+bool TaskAllocation::forget_expired_shuns(SimTime now) {
+  const std::size_t before = state_.shunned_until.size();
+  std::erase_if(state_.shunned_until, [now](const auto& entry) { return now >= entry.second; });
+  return state_.shunned_until.size() != before;
 }
 
 void TaskAllocation::go_to(RobotContext& robot, std::uint32_t id) {
@@ -315,7 +331,14 @@ void TaskAllocation::step_going(RobotContext& robot, const std::vector<EventSigh
   const std::uint32_t waiting = seen->waiting + 1;
   state_.memory.upsert(seen->id, seen->position, seen->required, seen->skill, waiting);
   state_.memory.remove_going(state_.event, robot.id());
-  broadcast(robot, MessageType::status, state_.event, waiting);
+  if (waiting >= seen->required) {
+    // This robot completes the group: the service starts now, and it alone says so (H), so
+    // that one H per event goes out, not one per participant.
+    broadcast(robot, MessageType::handling, state_.event, waiting);
+    state_.memory.mark_handled(state_.event);
+  } else {
+    broadcast(robot, MessageType::status, state_.event, waiting);
+  }
   state_.mode = Mode::waiting;
   state_.waiting_since = robot.now();
   state_.service_started = false;
@@ -338,10 +361,21 @@ void TaskAllocation::step_waiting(RobotContext& robot, const std::optional<JoinS
   const std::uint32_t required = known != nullptr ? known->required : 0;
   if (!state_.service_started && (joined->waiting >= required || joined->service_elapsed_s > 0.0)) {
     state_.service_started = true;
+    // Normally the robot that completed the group has sent H already (step_going); one that
+    // came together otherwise (a robot back inside the radius) is announced here.
     if (known != nullptr && !known->handled) {
       broadcast(robot, MessageType::handling, id, joined->waiting);
       state_.memory.mark_handled(id);
     }
+  } else if (state_.service_started && joined->waiting < required &&
+             joined->service_elapsed_s == 0.0) {
+    // The service stalled (a participant left or ran flat) and the world's clock restarted:
+    // the event needs robots again. S with the waiting count reopens it for the others, and
+    // this robot may abandon it again after abandon_after_s.
+    state_.service_started = false;
+    state_.waiting_since = robot.now();
+    state_.memory.reopen(id);
+    broadcast(robot, MessageType::status, id, joined->waiting);
   }
   if (!state_.service_started && robot.now() - state_.waiting_since > abandon_after_) {
     abandon(robot, joined);

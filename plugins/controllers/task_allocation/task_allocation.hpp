@@ -73,6 +73,9 @@ class TaskAllocation final : public Controller {
   // robot decided to go to one.
   bool discover(RobotContext& robot, const std::vector<EventSighting>& in_view, bool& chose);
   void decide(RobotContext& robot);
+  // Drops the abandoned events whose shun ended by `now`; returns whether any did, so that the
+  // decision rule runs again (such an event is a candidate once more).
+  bool forget_expired_shuns(SimTime now);
   void go_to(RobotContext& robot, std::uint32_t id);
   void explore(RobotContext& robot);
   void head_to_charger(RobotContext& robot, const std::optional<JoinStatus>& joined);

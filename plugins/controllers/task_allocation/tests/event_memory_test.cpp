@@ -85,5 +85,33 @@ TEST(TaskAllocationMemoryTest, LaterDecisionsGetLaterStamps) {
   EXPECT_GT(memory.find(1)->going.at(9), memory.find(1)->going.at(2));
 }
 
+TEST(TaskAllocationMemoryTest, ARobotGoesToOneEventAtATime) {
+  EventMemory memory;
+  memory.apply(message(MessageType::status, 7), 3);
+  memory.apply(message(MessageType::status, 8), 3);
+  memory.apply(message(MessageType::going, 7), 4);
+  // Its C for 7 was lost; its G for 8 says it left 7 anyway.
+  EXPECT_TRUE(memory.apply(message(MessageType::going, 8), 4));
+  EXPECT_FALSE(memory.find(7)->going.contains(4));
+  EXPECT_TRUE(memory.find(8)->going.contains(4));
+  // At an event (S, H) or gone (A): going nowhere.
+  memory.apply(message(MessageType::status, 9, 1), 4);
+  EXPECT_FALSE(memory.find(8)->going.contains(4));
+  memory.apply(message(MessageType::going, 8), 6);
+  memory.apply(message(MessageType::handling, 7, 4), 6);
+  EXPECT_FALSE(memory.find(8)->going.contains(6));
+}
+
+TEST(TaskAllocationMemoryTest, AStatusShortOfRobotsReopensAHandledEvent) {
+  EventMemory memory;
+  memory.apply(message(MessageType::handling, 7, 4), 3);
+  EXPECT_TRUE(memory.find(7)->handled);
+  memory.apply(message(MessageType::status, 7, 4), 5);  // still enough there: still handled
+  EXPECT_TRUE(memory.find(7)->handled);
+  EXPECT_TRUE(memory.apply(message(MessageType::status, 7, 3), 3));  // the service stalled
+  EXPECT_FALSE(memory.find(7)->handled);
+  EXPECT_EQ(memory.find(7)->waiting, 3U);
+}
+
 }  // namespace
 }  // namespace swarmnet::task_allocation

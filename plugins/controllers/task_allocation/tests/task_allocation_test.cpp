@@ -274,12 +274,14 @@ TEST_F(TaskAllocationTest, AbandonsAfterTheTimeoutAndDoesNotComeBackAtOnce) {
   EXPECT_EQ(controller->mode(), Mode::exploring);
   // Still needed, but shunned for abandon_after_s.
   robot.readings["joined"] = {};
+  see({});
   hear(MessageType::status, 8, 3, Vec2(140.0, 100.0), 4, 0, 1);
   step();
   EXPECT_EQ(controller->mode(), Mode::exploring);
-  for (int i = 0; i < 50; ++i) step();
-  hear(MessageType::status, 8, 3, Vec2(140.0, 100.0), 4, 0, 2);
-  step();
+  for (int i = 0; i < 40; ++i) step();
+  EXPECT_EQ(controller->mode(), Mode::exploring);
+  // The shun ends: with no message at all, the rule runs again and the event is chosen.
+  for (int i = 0; i < 12; ++i) step();
   EXPECT_EQ(controller->mode(), Mode::going);
   EXPECT_EQ(controller->event(), 3U);
 }
@@ -335,12 +337,41 @@ TEST_F(TaskAllocationTest, LowBatteryWhileWaitingAbandonsButNotDuringAService) {
   SetUp();
   make();
   arrive_at(3, Vec2(140.0, 100.0), 2.0, 1.0);
-  step();  // joined shows 2 of 2: H
-  EXPECT_EQ(types(), "SGSH");
+  step();  // joined shows 2 of 2: the service runs (this robot announced it on arrival)
+  EXPECT_EQ(types(), "SGH");
   robot.readings["battery"] = {0.2, 1.0};
   step();
   EXPECT_EQ(controller->mode(), Mode::waiting);
-  EXPECT_EQ(types(), "SGSH");
+  EXPECT_EQ(types(), "SGH");
+}
+
+TEST_F(TaskAllocationTest, TheRobotThatCompletesTheGroupSendsTheOnlyH) {
+  make();
+  arrive_at(3, Vec2(140.0, 100.0), 4.0, 3.0);  // three waiting: this robot is the fourth
+  EXPECT_EQ(types(), "SGH");
+  EXPECT_EQ(sent()[2].waiting, 4U);
+  EXPECT_TRUE(controller->memory().find(3)->handled);
+  robot.readings["joined"] = {3.0, 4.0, 0.1};
+  step();
+  step();
+  EXPECT_EQ(count("sent.H"), 1U);
+}
+
+TEST_F(TaskAllocationTest, AStalledServiceReopensTheEventForTheOthers) {
+  make({{"abandon_after_s", 5.0}});
+  arrive_at(3, Vec2(140.0, 100.0), 2.0, 1.0);  // completes the group: H
+  robot.readings["joined"] = {3.0, 2.0, 0.1};
+  step();
+  const std::size_t before = robot.sent.size();
+  robot.readings["joined"] = {3.0, 1.0, 0.0};  // the other one left: the clock restarted
+  step();
+  ASSERT_EQ(types(before), "S");
+  EXPECT_EQ(sent(before)[0].waiting, 1U);
+  EXPECT_FALSE(controller->memory().find(3)->handled);
+  EXPECT_EQ(controller->mode(), Mode::waiting);
+  // Waiting again, so it may abandon again after abandon_after_s.
+  for (int i = 0; i < 52; ++i) step();
+  EXPECT_EQ(types(before), "SA");
 }
 
 TEST_F(TaskAllocationTest, ExplorationMarksCellsAndAimsInsideTheArena) {
