@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "command_runner.hpp"
@@ -98,6 +99,25 @@ TEST(Replay, RefusesARunWithoutItsRecordsClearly) {
   const auto replay = run_swarmnet("replay " + run_dir.string());
   EXPECT_EQ(replay.exit_code, 2);
   EXPECT_NE(replay.output.find("positions.bin"), std::string::npos) << replay.output;
+}
+
+// Only a world plugin ends a run early: without one, a positions.bin shorter than the scenario
+// is refused (a run of another duration), not replayed as if it were whole.
+TEST(Replay, RefusesAShorterTraceWhenNoWorldCouldHaveEndedTheRun) {
+  TempDir dir;
+  const auto run_dir = dir.path() / "run";
+  const auto run =
+      run_swarmnet("run " + kConfigs + "quickstart.yaml" + kSmall + " --out " + run_dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto scenario = run_dir / "scenario.resolved.yaml";
+  std::string text = read_file(scenario);
+  const std::size_t at = text.find("duration_s: 10");
+  ASSERT_NE(at, std::string::npos) << text.substr(0, 300);
+  text.replace(at, std::strlen("duration_s: 10"), "duration_s: 20");
+  std::ofstream(scenario) << text;
+  const auto replay = run_swarmnet("replay " + run_dir.string());
+  EXPECT_NE(replay.exit_code, 0) << replay.output;
+  EXPECT_NE(replay.output.find("does not match"), std::string::npos) << replay.output;
 }
 
 }  // namespace

@@ -58,7 +58,8 @@ TEST_F(WorldPluginsTest, ControllersReadTheWorldAtTheStartOfEachStep) {
 
 TEST_F(WorldPluginsTest, ASwitchedOffRobotStandsStillAndItsControllersStop) {
   RobotWorld world(settings({}, {{"halt_robot", std::int64_t{1}}, {"halt_at_s", 0.5}}), loader_);
-  run(world, 6);  // robot 1 asks at 0.5 s, during the sixth step, and is stopped at once
+  run(world, 6);  // robot 1 asks at 0.5 s, during the sixth step: it moves in that step still
+  EXPECT_EQ(world.bodies()[1].left_mps, 1.0);
   run(world, 10);
   // The fixtures' physics is a stand-in that moves nothing: the wheels tell.
   EXPECT_EQ(world.bodies()[1].left_mps, 0.0);
@@ -108,6 +109,14 @@ TEST_F(WorldPluginsTest, SeveralWorldsRunButANameHasOneOwner) {
   EXPECT_NE(message.find("both offer the request 'halt'"), std::string::npos) << message;
   EXPECT_NE(message.find("(world.0)"), std::string::npos) << message;
   EXPECT_NE(message.find("(world.1)"), std::string::npos) << message;
+}
+
+TEST_F(WorldPluginsTest, AWorldsFailureNamesTheWorldAndTheHook) {
+  RobotWorld world(settings({{"fail_in", std::string("post_step")}}), loader_);
+  const std::string message = error_of([&] { run(world, 1); });
+  EXPECT_NE(message.find("world test_world (world.0), post_step at 0.1"), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("the fixture fails in post_step"), std::string::npos) << message;
 }
 
 }  // namespace

@@ -56,7 +56,8 @@ class RobotContext {
   // Messages delivered to this robot's port() since its previous step, in delivery order.
   [[nodiscard]] virtual std::span<const ReceivedMessage> inbox() const = 0;
   // A reading that one of the scenario's world plugins offers this robot (swarmnet/world.hpp),
-  // laid out as that plugin documents. Valid until the next call of reading(). Throws
+  // laid out as that plugin documents. Valid until the next call of reading() by any controller
+  // (copy what you keep). Throws
   // std::invalid_argument for a name no world of the scenario offers.
   [[nodiscard]] virtual std::span<const double> reading(std::string_view name) const = 0;
 

@@ -49,8 +49,9 @@ class WorldContext {
   [[nodiscard]] virtual double max_speed_mps(RobotId robot) const = 0;
   [[nodiscard]] virtual bool switched_off(RobotId robot) const = 0;
 
-  // From the next step on, `robot`'s controllers no longer run and its wheels stay still (a
-  // flat battery). Its network node is untouched: the radio keeps relaying.
+  // From the next step on (whichever hook or request asked), `robot`'s controllers no longer run
+  // and its wheels stay still (a flat battery); this step it moves as commanded. Its network
+  // node is untouched: the radio keeps relaying.
   virtual void switch_off(RobotId robot) = 0;
   // Adds one observation of a named metric; summary.json reports count, sum, mean, min and max
   // under "world", beside the controllers' metrics.

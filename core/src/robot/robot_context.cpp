@@ -58,10 +58,18 @@ std::uint64_t WorldRobotContext::send(RobotId destination, std::span<const std::
 }
 
 std::span<const double> WorldRobotContext::reading(std::string_view name) const {
+  if (state_->worlds == nullptr) {
+    throw std::invalid_argument("robot " + std::to_string(id_) + ": no world offers the reading '" +
+                                std::string(name) + "'");
+  }
   return state_->worlds->read(id_, name);
 }
 
 void WorldRobotContext::request(std::string_view name, std::span<const double> args) {
+  if (state_->worlds == nullptr) {
+    throw std::invalid_argument("robot " + std::to_string(id_) + ": no world offers the request '" +
+                                std::string(name) + "'");
+  }
   state_->worlds->request(id_, name, args);
 }
 

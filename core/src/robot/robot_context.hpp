@@ -44,9 +44,10 @@ struct RobotWorldState {
   std::uint64_t next_message_id = 0;
   std::vector<AppMessage>* outbox = nullptr;  // where send() appends
   ControllerMetrics metrics;
-  // Robots a world switched off (1): their controllers no longer run (swarmnet/world.hpp).
+  // Robots a world switched off (1): their controllers no longer run (swarmnet/world.hpp). A
+  // switch-off asked for during a step is pending (2) until the next step begins.
   std::vector<std::uint8_t> switched_off;
-  WorldPlugins* worlds = nullptr;  // answers readings and requests; owned by the world
+  WorldPlugins* worlds = nullptr;  // answers readings and requests; owned by RobotWorld
 };
 
 // The sensors and actuators of one robot.

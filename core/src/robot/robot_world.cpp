@@ -151,11 +151,14 @@ void RobotWorld::step(std::span<const Delivery> deliveries, std::vector<AppMessa
     sent_in_init_.clear();
   }
   state_.now = now();
+  // Switch-offs asked for during the previous step take effect now (swarmnet/world.hpp).
+  std::replace(state_.switched_off.begin(), state_.switched_off.end(), kSwitchOffPending,
+               std::uint8_t{1});
   worlds_->pre_step();
   {
     const OutboxScope outbox(state_, sent);
     for (std::size_t r = 0; r < contexts_.size(); ++r) {
-      if (state_.switched_off[r] != 0) {
+      if (state_.switched_off[r] == 1) {
         state_.bodies[r].left_mps = 0.0;
         state_.bodies[r].right_mps = 0.0;
         continue;

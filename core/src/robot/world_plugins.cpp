@@ -45,23 +45,40 @@ WorldPlugins::WorldPlugins(RobotWorldState& state, const std::vector<PluginChoic
   }
 }
 
+template <typename Hook>
+void WorldPlugins::call(std::size_t w, const char* hook, Hook&& action) {
+  try {
+    action(*worlds_[w]);
+  } catch (const std::exception& error) {
+    throw std::runtime_error("world " + names_[w] + " (world." + std::to_string(w) + "), " + hook +
+                             " at " + std::to_string(to_seconds(state_.now)) +
+                             " s: " + error.what());
+  }
+}
+
 void WorldPlugins::setup() {
-  for (auto& world : worlds_) world->setup(*this);
+  for (std::size_t w = 0; w < worlds_.size(); ++w) {
+    call(w, "setup", [&](World& world) { world.setup(*this); });
+  }
 }
 
 void WorldPlugins::pre_step() {
-  for (auto& world : worlds_) world->pre_step(*this);
+  for (std::size_t w = 0; w < worlds_.size(); ++w) {
+    call(w, "pre_step", [&](World& world) { world.pre_step(*this); });
+  }
 }
 
 void WorldPlugins::post_step() {
   for (std::size_t w = 0; w < worlds_.size(); ++w) {
-    worlds_[w]->post_step(*this);
+    call(w, "post_step", [&](World& world) { world.post_step(*this); });
     if (!done_by_ && worlds_[w]->task_done()) done_by_ = w;
   }
 }
 
 void WorldPlugins::end() {
-  for (auto& world : worlds_) world->end(*this);
+  for (std::size_t w = 0; w < worlds_.size(); ++w) {
+    call(w, "end", [&](World& world) { world.end(*this); });
+  }
 }
 
 std::optional<std::string> WorldPlugins::done_by() const {
@@ -83,7 +100,12 @@ std::size_t WorldPlugins::owner(const std::map<std::string, std::size_t, std::le
 std::span<const double> WorldPlugins::read(RobotId robot, std::string_view name) {
   const std::size_t w = owner(reading_owners_, name, "reading", robot);
   scratch_.clear();
-  worlds_[w]->read(*this, robot, name, scratch_);
+  try {
+    worlds_[w]->read(*this, robot, name, scratch_);
+  } catch (const std::exception& error) {
+    throw std::runtime_error("world " + names_[w] + ": reading '" + std::string(name) +
+                             "' for robot " + std::to_string(robot) + ": " + error.what());
+  }
   return scratch_;
 }
 
@@ -112,9 +134,7 @@ bool WorldPlugins::switched_off(RobotId robot) const {
 
 void WorldPlugins::switch_off(RobotId robot) {
   (void)body(robot);
-  state_.switched_off[robot] = 1;
-  state_.bodies[robot].left_mps = 0.0;
-  state_.bodies[robot].right_mps = 0.0;
+  if (state_.switched_off[robot] == 0) state_.switched_off[robot] = kSwitchOffPending;
 }
 
 void WorldPlugins::record(std::string_view metric, double value) {

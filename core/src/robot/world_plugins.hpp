@@ -20,6 +20,9 @@
 
 namespace swarmnet {
 
+// RobotWorldState::switched_off: asked for during this step, in force from the next.
+inline constexpr std::uint8_t kSwitchOffPending = 2;
+
 class WorldPlugins final : public WorldContext {
  public:
   // Creates world `choices[w]` with seed and shared seed derive_seed(seed, {hash_name("world"),
@@ -66,6 +69,9 @@ class WorldPlugins final : public WorldContext {
   void record(std::string_view metric, double value) override;
 
  private:
+  // Runs `action` on world `w`; an exception from it is rethrown naming the world and the hook.
+  template <typename Hook>
+  void call(std::size_t w, const char* hook, Hook&& action);
   // Throws std::out_of_range naming the robot when `robot` is not one.
   [[nodiscard]] const RobotBody& body(RobotId robot) const;
   // The index of the world offering `name` in `owners`; throws naming `what` when none does.

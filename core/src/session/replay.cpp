@@ -96,9 +96,11 @@ ReplayOutcome replay_network(const ReplayInputs& inputs, const std::filesystem::
   const PositionsTrace positions = read_positions_trace(inputs.positions);
   const std::vector<TrafficRow> traffic = read_traffic(inputs.traffic);
   const SimTime step = from_seconds(scenario.step_s);
-  // Fewer steps than the scenario's: a world plugin ended the run when its task was done.
+  // Fewer steps than the scenario's only when a world plugin may have ended the run early.
+  const bool may_end_early = !scenario.worlds.empty();
   if (positions.robots != scenario.robots.count || positions.step != step ||
-      positions.steps > scenario.step_count()) {
+      positions.steps > scenario.step_count() ||
+      (!may_end_early && positions.steps != scenario.step_count())) {
     throw RunError(inputs.positions.string() + " (" + std::to_string(positions.robots) +
                    " robots, " + std::to_string(positions.steps) + " steps of " +
                    std::to_string(positions.step.count()) + " ns) does not match " +

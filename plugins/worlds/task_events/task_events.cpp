@@ -25,7 +25,8 @@ PluginInfo TaskEvents::info() {
       "least required_robots are waiting, the event's service clock runs; when it drops below, "
       "the clock starts again from 0 (the robots must be there together for the whole time). "
       "After service_time_s (to within half a step) the event is serviced: every robot waiting "
-      "there is recharged to a full battery (the reward) and its join ends.\n"
+      "there is recharged to a full battery (the reward), and the join of every robot that "
+      "joined it ends.\n"
       "Energy: a full battery drives a robot for energy_s seconds at its maximum speed; driving "
       "a distance d costs d / (energy_s * max_speed) of it, and standing still costs nothing (the "
       "study's penalty on 'pointless moves'). Inside charger_radius_m of the arena's centre a "
@@ -36,7 +37,9 @@ PluginInfo TaskEvents::info() {
       "spare). A robot whose battery is empty is switched off for the rest of the run.\n"
       "The run ends when the last event is serviced. Metrics: completion_time_s (once, when all "
       "are serviced), events_serviced (per event, its time), out_of_energy (per robot that ran "
-      "flat, the time), distance_m (per robot, at the end), events_unserviced (once, at the end).",
+      "flat, the time), distance_m (per robot, at the end), events_unserviced (once, at the end), "
+      "infeasible_events (once, at setup: events whose skill fewer than required_robots robots "
+      "have, which no run can service).",
       {integer_param("events", 10, "", "events to service", 1, 100000),
        integer_param("required_robots", 4, "robots", "robots with the skill an event needs (n)", 1,
                      100000),
@@ -99,6 +102,16 @@ void TaskEvents::setup(WorldContext& world) {
     robots_[r].skills = skills[r];
     robots_[r].last_position = world.position(static_cast<RobotId>(r));
   }
+  // An event whose skill fewer than required_robots robots have can never be serviced: said
+  // once, so that a run that cannot finish is told from one that did not.
+  std::size_t infeasible = 0;
+  for (const TaskEvent& event : events_) {
+    const auto able = std::count_if(robots_.begin(), robots_.end(), [&](const RobotState& robot) {
+      return has_skill(robot, event.skill);
+    });
+    if (static_cast<std::uint32_t>(able) < required_) ++infeasible;
+  }
+  world.record("infeasible_events", static_cast<double>(infeasible));
 }
 
 bool TaskEvents::has_skill(const RobotState& robot, std::uint32_t skill) const {

@@ -227,6 +227,14 @@ TEST(TaskEventsTest, EndRecordsDistancesAndWhatIsLeft) {
   EXPECT_FALSE(s.plugin->task_done());
 }
 
+TEST(TaskEventsTest, SaysWhichEventsNoRunCouldService) {
+  Fixture enough = make(20, {{"events", std::int64_t{5}}, {"skill_types", std::int64_t{1}}});
+  EXPECT_EQ(enough.world.recorded.at("infeasible_events"), (std::vector<double>{0.0}));
+  // Three robots cannot make the four an event needs.
+  Fixture few = make(3, {{"events", std::int64_t{5}}, {"skill_types", std::int64_t{1}}});
+  EXPECT_EQ(few.world.recorded.at("infeasible_events"), (std::vector<double>{5.0}));
+}
+
 TEST(TaskEventsTest, RefusesMoreSkillsPerRobotThanThereAre) {
   EXPECT_THROW(TaskEvents(plugin_args<TaskEvents>({{"skills_per_robot", std::int64_t{3}}})),
                std::invalid_argument);
