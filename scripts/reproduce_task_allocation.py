@@ -54,7 +54,7 @@ COMPLETION_COUNT = "world.completion_time_s.count"
 COMPLETION = "world.completion_time_s.mean"          # one observation: the run's completion time
 ENDED_BY = "ended.by"
 ENDED_AT = "ended.at_s"
-SIM_TIME = "duration_s"                              # the scenario's duration_s: the cap
+CAP = "duration_s"                              # the scenario's duration_s: the cap
 OUT_OF_ENERGY = "world.out_of_energy.count"          # one observation per robot that ran flat
 DISTANCE = "world.distance_m.mean"                   # one observation per robot
 SENT_PREFIX, SENT_SUFFIX = "controllers.sent.", ".count"
@@ -108,7 +108,7 @@ def read_runs(path):
         if ended_by is None and not row.get(COMPLETION_COUNT):
             sys.exit(f"{path}:{line} ({row.get('run_id')}): an ok run without {ENDED_BY} or "
                      f"{COMPLETION_COUNT}: its summary.json has no task_events fields")
-        cap = number(row.get(SIM_TIME))  # the scenario's duration_s
+        cap = number(row.get(CAP))  # the scenario's duration_s
         if finished:
             if count > 1:
                 say(f"warning: {path}:{line}: {count:g} completion times; using their mean")
@@ -117,7 +117,7 @@ def read_runs(path):
             time = number(row.get(ENDED_AT))
             time = time if time is not None else cap
             if time is None:
-                sys.exit(f"{path}:{line}: an unfinished run without {ENDED_AT} or {SIM_TIME}")
+                sys.exit(f"{path}:{line}: an unfinished run without {ENDED_AT} or {CAP}")
         runs.append({
             "run_id": row.get("run_id", ""), "seed": row.get("seed", ""), "cell": cell,
             "finished": finished, "time": time, "cap": cap,

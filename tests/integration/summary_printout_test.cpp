@@ -65,5 +65,23 @@ TEST(SummaryPrintout, AKindNotSentSaysSoRatherThanAZeroRatio) {
   EXPECT_NE(only_unicast.find("broadcast     none sent"), std::string::npos) << only_unicast;
 }
 
+TEST(SummaryPrintout, ARunAWorldEndedSaysHowItEnded) {
+  nlohmann::ordered_json s = summary(10, 10, 0, 90);
+  s["duration_s"] = 3000.0;
+  s["ended"] = {{"by", "task_done"}, {"world", "task_events"}, {"at_s", 572.5}};
+  s["world"] = nlohmann::ordered_json::object();
+  EXPECT_NE(printed(s).find("ended         task done (world task_events) at 572.5 s, before the "
+                            "3000 s cap"),
+            std::string::npos)
+      << printed(s);
+  s["ended"] = {{"by", "duration"}, {"world", nullptr}, {"at_s", 3000.0}};
+  EXPECT_NE(printed(s).find("ended         at duration_s, 3000 s: the worlds' task was not done"),
+            std::string::npos)
+      << printed(s);
+  // Without world plugins a run always ends at duration_s: nothing to say.
+  s.erase("world");
+  EXPECT_EQ(printed(s).find("ended"), std::string::npos) << printed(s);
+}
+
 }  // namespace
 }  // namespace swarmnet

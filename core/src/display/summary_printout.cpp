@@ -13,6 +13,18 @@ void print_summary(std::FILE* out, const nlohmann::ordered_json& s,
   std::fprintf(out, "  simulated     %.1f s in %" PRIu64 " steps of %g s (%s sync)\n",
                s["sim_time_s"].get<double>(), s["steps"].get<std::uint64_t>(),
                s["step_s"].get<double>(), s["sync"].get<std::string>().c_str());
+  // A run with world plugins says how it ended: its task done, or cut off at duration_s.
+  if (s.contains("ended")) {
+    const auto& ended = s["ended"];
+    if (ended["by"] == "task_done") {
+      std::fprintf(out, "  ended         task done (world %s) at %.1f s, before the %g s cap\n",
+                   ended["world"].get<std::string>().c_str(), ended["at_s"].get<double>(),
+                   s["duration_s"].get<double>());
+    } else if (s.contains("world")) {
+      std::fprintf(out, "  ended         at duration_s, %g s: the worlds' task was not done\n",
+                   s["duration_s"].get<double>());
+    }
+  }
   std::fprintf(out, "  wall time     %.2f s, %.1fx real time\n", s["wall_s"].get<double>(),
                s["realtime_factor"].get<double>());
   std::fprintf(out, "  CPU           robot %.2f s, network %.2f s, transport %.3f s\n",

@@ -117,7 +117,7 @@ struct RobotLoop {
 NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, StepChannel& channel,
                                MobilityTraceWriter* mobility, PositionsTraceWriter* positions,
                                ObjectTraceWriter* objects, TrafficScheduleWriter* traffic,
-                               ProgressLine& progress, RobotLoop& cost) {
+                               ProgressLine& progress, RobotLoop& loop) {
   const std::uint64_t steps = scenario.step_count();
   const std::uint64_t lag = delivery_lag(scenario.sync);
   StepBatch batch;
@@ -127,7 +127,7 @@ NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, Step
   auto receive = [&](std::uint64_t expected_step) {
     const double before = thread_cpu_seconds();
     const ProtocolResult received = channel.receive_result(result);
-    cost.transport_cpu_s += thread_cpu_seconds() - before;
+    loop.transport_cpu_s += thread_cpu_seconds() - before;
     if (!received.ok()) throw PeerLost(received.error);
     if (result.step != expected_step) {
       throw PeerLost("protocol error: the network half answered step " +
@@ -158,14 +158,14 @@ NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, Step
 
     const double before = thread_cpu_seconds();
     const ProtocolResult sent = channel.send_batch(batch);
-    cost.transport_cpu_s += thread_cpu_seconds() - before;
+    loop.transport_cpu_s += thread_cpu_seconds() - before;
     if (!sent.ok()) throw PeerLost(sent.error);
     progress.update(step + 1);
-    cost.steps = step + 1;
+    loop.steps = step + 1;
     if (world.task_done()) break;
   }
   // Windows whose deliveries no robot step will read any more: still simulated and counted.
-  const std::uint64_t ran = cost.steps;
+  const std::uint64_t ran = loop.steps;
   for (std::uint64_t step = ran > lag ? ran - lag : 0; step < ran; ++step) receive(step);
   if (const ProtocolResult r = channel.send_finish(); !r.ok()) throw PeerLost(r.error);
   NetworkReport report;
@@ -231,7 +231,7 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
     StepChannel channel(link->transport(), "the network half");
     log.line("transport: " + link->describe());
 
-    RobotLoop cost;
+    RobotLoop loop;
     NetworkReport report;
     std::string robot_error;
     bool lost_peer = false;
@@ -242,7 +242,7 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
         link->connected();
         report = drive_robot_half(scenario, world, channel, mobility ? &*mobility : nullptr,
                                   positions ? &*positions : nullptr, objects ? &*objects : nullptr,
-                                  traffic ? &*traffic : nullptr, progress, cost);
+                                  traffic ? &*traffic : nullptr, progress, loop);
       } catch (const PeerLost& error) {
         robot_error = error.what();
         lost_peer = true;
@@ -271,7 +271,7 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
 
     const double wall_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-    const double robot_cpu = thread_cpu_seconds() - cpu_start - cost.transport_cpu_s;
+    const double robot_cpu = thread_cpu_seconds() - cpu_start - loop.transport_cpu_s;
 
     world.end_worlds();
     if (positions) positions->finish();
@@ -285,10 +285,10 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
     summary.transport =
         options.link.remote.empty() ? to_string(options.link.kind) : options.link.remote;
     summary.timings = {wall_s, robot_cpu, report.network_cpu_s,
-                       cost.transport_cpu_s + report.transport_cpu_s};
+                       loop.transport_cpu_s + report.transport_cpu_s};
     summary.network = &report;
     summary.controllers = &world.controller_metrics();
-    summary.steps = cost.steps;
+    summary.steps = loop.steps;
     summary.ended = SummaryInputs::Ended{world.done_by()};
     if (!scenario.worlds.empty()) summary.world = &world.world_metrics();
     outcome.summary = build_summary(summary);
@@ -299,7 +299,7 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
     summary_file.stream() << outcome.summary.dump(2) << "\n";
     summary_file.finish();
     const std::optional<std::string> done_by = world.done_by();
-    log.line("finished: " + std::to_string(cost.steps) + " steps" +
+    log.line("finished: " + std::to_string(loop.steps) + " steps" +
              (done_by ? ", ended by world " + *done_by + ": its task is done" : ""));
     log.commit();
     summary_file.commit();
