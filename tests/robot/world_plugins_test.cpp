@@ -111,6 +111,22 @@ TEST_F(WorldPluginsTest, SeveralWorldsRunButANameHasOneOwner) {
   EXPECT_NE(message.find("(world.1)"), std::string::npos) << message;
 }
 
+// post_step sees the bodies where the physics put them. The fixtures' kinematic2d is a stand-in
+// that moves nothing, so this runs on ode, which no fixture shadows.
+TEST_F(WorldPluginsTest, PostStepSeesTheRobotsWhereThePhysicsMovedThem) {
+  RobotSettings s = settings();
+  s.arena = Arena{500.0, 500.0, {}};
+  s.robots.placement = Rect{200.0, 200.0, 300.0, 300.0};
+  s.physics = make_choice(loader_, "ode", PluginKind::physics);
+  RobotWorld world(s, loader_);
+  const Vec2 start = world.bodies()[0].position;
+  run(world, 20);
+  const double moved = (world.bodies()[0].position - start).norm();
+  ASSERT_GT(moved, 0.5);  // 2 s at up to 1 m/s
+  // Summed step by step between the hooks, at least the net displacement.
+  EXPECT_GE(world.world_metrics().at("robot0_moved_m").sum, moved - 1e-9);
+}
+
 TEST_F(WorldPluginsTest, AWorldsFailureNamesTheWorldAndTheHook) {
   RobotWorld world(settings({{"fail_in", std::string("post_step")}}), loader_);
   const std::string message = error_of([&] { run(world, 1); });

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <numbers>
+#include <set>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -47,6 +48,9 @@ class FakeRobotContext final : public RobotContext {
   std::vector<ReceivedMessage> received;
   // World readings by name, as a world plugin would offer them (swarmnet/world.hpp).
   std::map<std::string, std::vector<double>, std::less<>> readings;
+  // Requests the world offers; when not empty, request() refuses any other name, as the kernel
+  // does (a typo in a rarely taken branch shows in the test, not deep in a sweep).
+  std::set<std::string, std::less<>> offered_requests;
   // Actuators: read by the test.
   double left_mps = 0.0;
   double right_mps = 0.0;
@@ -75,6 +79,9 @@ class FakeRobotContext final : public RobotContext {
     return it->second;
   }
   void request(std::string_view name, std::span<const double> args) override {
+    if (!offered_requests.empty() && !offered_requests.contains(name)) {
+      throw std::invalid_argument("no world offers the request '" + std::string(name) + "'");
+    }
     requests.push_back({std::string(name), {args.begin(), args.end()}, time});
   }
   void set_wheel_speeds(double left, double right) override {

@@ -32,6 +32,7 @@ class TaskAllocationTest : public ::testing::Test {
     robot.readings["events_in_view"] = {};
     robot.readings["charger"] = {250.0, 250.0, 10.0};
     robot.readings["joined"] = {};
+    robot.offered_requests = {"join", "leave"};  // task_events's
   }
 
   TaskAllocation& make(const ParamOverrides& overrides = {}, std::uint64_t seed = 1) {
