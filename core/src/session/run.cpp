@@ -279,6 +279,11 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
     if (positions_file) positions_file->commit();
     if (objects_file) objects_file->commit();
     if (traffic_file) traffic_file->commit();
+    if (!world.view_record().empty()) {
+      AtomicFile view_file(outcome.dir / kViewStatesFile);
+      world.view_record().write_csv(view_file.stream());
+      view_file.commit();
+    }
 
     SummaryInputs summary;
     summary.scenario = &scenario;

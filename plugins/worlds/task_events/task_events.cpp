@@ -99,6 +99,7 @@ void TaskEvents::setup(WorldContext& world) {
     robots_[r].skills = skills[r];
     robots_[r].last_position = world.position(static_cast<RobotId>(r));
   }
+  show(world);
 }
 
 bool TaskEvents::has_skill(const RobotState& robot, std::uint32_t skill) const {
@@ -112,6 +113,17 @@ bool TaskEvents::at_charger(const Vec2& position) const {
 void TaskEvents::post_step(WorldContext& world) {
   update_energy(world);
   update_events(world);
+  show(world);
+}
+
+void TaskEvents::show(WorldContext& world) const {
+  for (const TaskEvent& event : events_) {
+    const char* state = event.serviced      ? "serviced"
+                        : event.waiting > 0 ? "being serviced"
+                                            : "unserviced";
+    world.show_object(event.id, "event", state, event.position, service_radius_m_);
+  }
+  world.show_object(event_count_, "charger", "charger", charger_, charger_radius_m_);
 }
 
 void TaskEvents::update_energy(WorldContext& world) {
