@@ -115,8 +115,15 @@ int run_command(ScenarioArguments args, bool quiet, bool overwrite, bool view,
     const auto outcome = swarmnet::run_scenario(scenario, loader, options);
     if (!quiet) swarmnet::print_summary(stdout, outcome.summary, outcome.dir);
     if (view) {
-      swarmnet::write_view_page(outcome.dir, outcome.dir / swarmnet::kViewPageFile);
-      if (!quiet) std::printf("viewer: %s\n", (outcome.dir / swarmnet::kViewPageFile).c_str());
+      const std::filesystem::path page = outcome.dir / swarmnet::kViewPageFile;
+      try {
+        swarmnet::write_view_page(outcome.dir, page);
+      } catch (const std::exception& error) {
+        return fail(kExitRunFailed, std::string("the run finished, but its page (--view) could "
+                                                "not be written: ") +
+                                        error.what());
+      }
+      if (!quiet) std::printf("viewer: %s\n", page.c_str());
     }
   } catch (const std::exception& error) {
     const int signal = swarmnet::stop_signal();

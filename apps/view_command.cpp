@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "outputs/atomic_file.hpp"
 #include "outputs/output_files.hpp"
 #include "session/exit_codes.hpp"
 #include "viewer/frame_renderer.hpp"
@@ -56,10 +57,9 @@ int view_command(const ViewCommandOptions& options) {
     const ViewData data = read_view_data(run_dir);
     duration_s = data.meta["duration_s"].get<double>();
     const std::string html = render_view_page(data);
-    std::ofstream out(page, std::ios::binary | std::ios::trunc);
-    out << html;
-    out.close();
-    if (!out) return refuse(kExitRunFailed, "cannot write " + page.string());
+    AtomicFile file(page);  // under a temporary name, renamed when whole
+    file.stream() << html;
+    file.commit();
     if (!options.quiet) {
       std::printf("%s: %.1f MB, %s robots, %.1f s (open it in a browser)\n", page.c_str(),
                   static_cast<double>(html.size()) / 1e6, data.meta["robots"].dump().c_str(),
