@@ -2,7 +2,7 @@
 """The viewer in a real browser (docs/viewer.md): Debian's Chromium, headless.
 
 On a short quickstart run (5 s): the page opens with every network request refused and no console
-error, a frame sought to t = 4.5 s shows every robot where positions.bin puts it (pixels checked at
+error, the interactive page plays, a frame sought to t = 4.5 s shows every robot where positions.bin puts it (pixels checked at
 coordinates computed here from positions.bin) and no longer where it was at t = 0; a page whose
 data is broken says so (status and console), never a blank page; a video has the frames and
 duration asked (ffprobe) and its frame at t matches `--frame t --png`; a truncated or missing file
@@ -182,6 +182,17 @@ def main():
         stale = sum(near(pixels[int(y)][int(x)], ROBOT_RGB) for x, y in left)
         check(len(left) >= robots // 2, f"only {len(left)} robots moved far enough to test the seek")
         check(stale == 0, f"{stale} of {len(left)} robots still drawn at their t = 0 place")
+
+        # The interactive page plays (play=1; virtual time drives its animation frames).
+        dom = subprocess.run(chromium_command(chromium, work / "profile", [
+            "--window-size=1100,720", "--virtual-time-budget=2000",
+            "--run-all-compositor-stages-before-draw", "--dump-dom", f"file://{page}#t=0&play=1"]),
+            capture_output=True, text=True, timeout=120)
+        clock = re.search(r'<span id="clock">([\d.]+) /', dom.stdout)
+        check(clock is not None and float(clock.group(1)) > 0, "the interactive page did not play: "
+              + (clock.group(0) if clock else "no clock"))
+        check('<div id="status" hidden="">ok</div>' in dom.stdout, "the interactive page failed")
+        check(not console_errors(dom.stderr), f"console errors: {console_errors(dom.stderr)}")
 
         # 2. A page whose data is broken: an error shown and on the console, never a blank page.
         broken = work / "broken.html"

@@ -6,7 +6,8 @@
 //                             frames K .. K+M-1 at times S + k/N drawn in turn, each put as a PNG
 //                             data URL on a line of <pre id="out"> (`swarmnet view --video/--png`)
 //   #bench&n=N&w=W&h=H        opening time and drawing time of N frames, as JSON in <pre id="out">
-// Common options: label=0 leaves out the time label; links=1 draws the pairs within range.
+// Common options: label=0 leaves out the time label; links=1&range=M draws the pairs within M
+// metres. Interactive only: play=1 starts playing at once.
 // In every mode <div id="status"> ends as "ok", or "error: ..." with the message also shown.
 'use strict';
 (function () {
@@ -563,4 +564,5 @@
   layout();
   fit();
   render();
+  if (params.get('play') === '1') setPlaying(true);
 })();
