@@ -98,7 +98,8 @@ def chromium_command(profile, extra):
         sys.exit("run_viewer_bench: Chromium is not installed (apt-get install chromium)")
     command = [chromium, "--headless=new", "--disable-gpu", "--hide-scrollbars", "--no-first-run",
                "--user-data-dir=" + str(profile)]
-    if os.geteuid() == 0:
+    # As `swarmnet view` does (frame_renderer.cpp): Chromium refuses its sandbox to root.
+    if os.geteuid() == 0 or os.environ.get("SWARMNET_CHROMIUM_NO_SANDBOX"):
         command.append("--no-sandbox")
     return command + extra
 

@@ -104,7 +104,8 @@ def chromium_command(chromium, profile, extra):
                # No network: every name fails to resolve and every proxied request is refused.
                "--host-resolver-rules=MAP * ~NOTFOUND", "--proxy-server=http://127.0.0.1:9",
                "--proxy-bypass-list=<-loopback>"]
-    if os.geteuid() == 0:
+    # As `swarmnet view` does (frame_renderer.cpp): Chromium refuses its sandbox to root.
+    if os.geteuid() == 0 or os.environ.get("SWARMNET_CHROMIUM_NO_SANDBOX"):
         command.append("--no-sandbox")
     return command + extra
 
