@@ -2,8 +2,8 @@
 """Results change only on purpose: short reference runs whose output hashes are pinned in the tree.
 
 Runs each reference scenario below with the built `swarmnet`, hashes its outputs (packets.csv,
-positions.bin, mobility.ns2, traffic.csv, summary.json without its timing fields, and the
-task-allocation run's view_states.csv) and compares
+positions.bin, mobility.ns2, traffic.csv, summary.json without its timing fields, headings.bin,
+and the task-allocation run's view_states.csv) and compares
 them with tests/integration/pinned_outputs.txt. A change that moves a result fails here; if the
 change is meant to move it, re-pin and say so in the commit:
 
@@ -37,7 +37,8 @@ RUNS = {
                         ["--set", "robots.count=10", "--set", "world.0.params.events=2",
                          "--set", "output.packet_trace=true"]),
 }
-FILES = ["packets.csv", "positions.bin", "mobility.ns2", "traffic.csv", "summary.json"]
+FILES = ["packets.csv", "positions.bin", "mobility.ns2", "traffic.csv", "summary.json",
+         "headings.bin"]
 # Outputs only some runs write: what the plugins showed the viewer (robot states, world objects).
 EXTRA_FILES = {"task-allocation": ["view_states.csv"]}
 # Fields of summary.json that measure the machine, not the simulation.

@@ -7,9 +7,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <string>
 #include <vector>
 
+#include "outputs/headings_trace.hpp"
 #include "outputs/positions_trace.hpp"
 #include "outputs/run_error.hpp"
 #include "viewer/frame_renderer.hpp"
@@ -64,6 +66,7 @@ TEST_F(RunDirectory, PacksPositionsHeadingsAndStates) {
         "1000000000,object,0,event,serviced,30,30,2\n");
   const ViewData data = read_view_data(dir_);
   EXPECT_EQ(data.meta["robots"], 2);
+  EXPECT_EQ(data.meta["headings"], "direction of motion");  // no headings.bin
   EXPECT_EQ(data.meta["frames"], 4);
   EXPECT_DOUBLE_EQ(data.meta["duration_s"].get<double>(), 2.0);
   EXPECT_EQ(data.meta["states"], (std::vector<std::string>{"", "going", "unserviced", "serviced"}));
@@ -80,6 +83,35 @@ TEST_F(RunDirectory, PacksPositionsHeadingsAndStates) {
   const auto state = data.meta["arrays"]["state"];
   EXPECT_EQ(data.blob[state[0].get<std::size_t>() + 1], 1);  // robot 1 "going" from t = 0
   EXPECT_EQ(data.meta["arrays"]["obj_t"][1], 2);
+}
+
+TEST_F(RunDirectory, HeadingsComeFromHeadingsBinWhenTheRunWroteIt) {
+  {
+    std::ofstream out(dir_ / "headings.bin", std::ios::binary);
+    HeadingsTraceWriter writer(out, 2, 4, from_seconds(0.5));
+    std::vector<RobotBody> bodies(2);
+    for (int step = 0; step < 4; ++step) {
+      bodies[0].heading_rad = std::numbers::pi;  // turning on the spot would not show in x, y
+      bodies[1].heading_rad = -std::numbers::pi / 2;
+      writer.sample(bodies);
+    }
+  }
+  const ViewData data = read_view_data(dir_);
+  EXPECT_EQ(data.meta["headings"], "recorded");
+  const std::uint8_t* h = data.blob.data() + data.meta["arrays"]["heading"][0].get<std::size_t>();
+  EXPECT_EQ(h[2 * 2 + 0], 128);  // half a turn
+  EXPECT_EQ(h[2 * 2 + 1], 192);  // three quarters
+
+  fs::resize_file(dir_ / "headings.bin", 32 + 7);
+  EXPECT_NE(error().find("headings.bin: is 39 bytes long"), std::string::npos) << error();
+}
+
+TEST(HeadingsTrace, QuantizesToTurnsCounterClockwiseFromX) {
+  EXPECT_EQ(quantize_heading(0.0), 0);
+  EXPECT_EQ(quantize_heading(std::numbers::pi / 2), 64);
+  EXPECT_EQ(quantize_heading(-std::numbers::pi / 2), 192);
+  EXPECT_EQ(quantize_heading(2 * std::numbers::pi - 1e-9), 0);  // wraps
+  EXPECT_EQ(quantize_heading(std::nan("")), 0);
 }
 
 TEST_F(RunDirectory, ThePageHoldsEverythingItNeeds) {

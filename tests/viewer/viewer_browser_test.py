@@ -145,6 +145,11 @@ def main():
             sys.exit(f"the run failed: {done.stderr}")
         page = run / "view.html"
         check(page.is_file(), "swarmnet run --view wrote no view.html")
+        check((run / "headings.bin").is_file(), "the run wrote no headings.bin")
+        # The run directory knows view.html and headings.bin as its own: --overwrite replaces them.
+        done = swarmnet(args.bin, "run", SOURCE / "configs/quickstart.yaml", "--quiet", "--transport",
+                        "inproc", "--set", "duration_s=5", "--out", run, "--view", "--overwrite")
+        check(done.returncode == 0, f"--overwrite refused the run's own files: {done.stderr}")
         html = page.read_text()
         check(not re.search(r"""(src|href)\s*=\s*["']?(https?:)?//""", html),
               "the page refers to something outside itself")

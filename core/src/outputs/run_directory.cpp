@@ -14,7 +14,7 @@ constexpr std::array kOutputFiles = {
     kSummaryFile,         kResolvedScenarioFile, kLogFile,
     kPacketTraceFile,     kMobilityTraceFile,    kPositionsTraceFile,
     kTrafficScheduleFile, kObjectTraceFile,      kViewStatesFile,
-    kViewPageFile};
+    kViewPageFile,        kHeadingsTraceFile};
 
 bool is_output_file(const std::string& name) {
   return std::find(kOutputFiles.begin(), kOutputFiles.end(), name) != kOutputFiles.end();

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -14,11 +15,15 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "outputs/headings_trace.hpp"
 #include "outputs/output_files.hpp"
 #include "outputs/positions_trace.hpp"
 #include "outputs/run_error.hpp"
 
 namespace swarmnet {
+
+static_assert(std::endian::native == std::endian::little,
+              "the viewer reads the traces' little-endian numbers in place");
 
 namespace {
 
@@ -223,12 +228,45 @@ PositionsHeader read_positions_header(std::ifstream& in, const fs::path& file) {
   return h;
 }
 
+// headings.bin (outputs/headings_trace.hpp), opened and checked against positions.bin's shape;
+// nullopt when the run has none (written before it existed).
+std::optional<std::ifstream> open_headings(const fs::path& file, const PositionsHeader& positions) {
+  if (!fs::exists(file)) return std::nullopt;
+  std::ifstream in(file, std::ios::binary);
+  char header[kHeadingsHeaderBytes];
+  if (!in.read(header, sizeof header))
+    refuse(file, "is truncated: shorter than its 32-byte header");
+  if (std::memcmp(header, "SNHDG\0\0\0", 8) != 0)
+    refuse(file, "is not a headings trace (bad magic)");
+  std::uint32_t version = 0;
+  std::uint32_t robots = 0;
+  std::uint64_t steps = 0;
+  std::memcpy(&version, header + 8, 4);
+  std::memcpy(&robots, header + 12, 4);
+  std::memcpy(&steps, header + 16, 8);
+  if (version != kHeadingsTraceVersion)
+    refuse(file, "version " + std::to_string(version) + "; expected 1");
+  if (robots != positions.robots || steps != positions.steps) {
+    refuse(file, "holds " + std::to_string(robots) + " robots x " + std::to_string(steps) +
+                     " steps; positions.bin holds " + std::to_string(positions.robots) + " x " +
+                     std::to_string(positions.steps));
+  }
+  std::error_code ec;
+  const std::uintmax_t expected = kHeadingsHeaderBytes + steps * robots;
+  const std::uintmax_t size = fs::file_size(file, ec);
+  if (ec || size != expected) {
+    refuse(file, "is " + std::to_string(size) + " bytes long; its header needs " +
+                     std::to_string(expected) + " (truncated?)");
+  }
+  return in;
+}
+
 std::uint16_t quantize(double value, double extent) {
   const double q = std::round(value / extent * 65535.0);
   return static_cast<std::uint16_t>(std::clamp(std::isfinite(q) ? q : 0.0, 0.0, 65535.0));
 }
 
-std::uint8_t quantize_heading(double x, double y) {
+std::uint8_t motion_heading(double x, double y) {
   double a = std::atan2(y, x);
   if (a < 0) a += 2.0 * std::numbers::pi;
   return static_cast<std::uint8_t>(
@@ -547,6 +585,7 @@ ViewData read_view_data(const fs::path& run_dir, const ViewLimits& limits) {
   std::vector<double> before;
   std::vector<double> motion(static_cast<std::size_t>(robots) * 2, 0.0);
   std::size_t next_change = 0;
+  std::optional<std::ifstream> headings = open_headings(run_dir / kHeadingsTraceFile, header);
   for (std::uint64_t step = 0; step < header.steps; ++step) {
     positions.next(now);
     if (step > 0) {
@@ -568,10 +607,17 @@ ViewData read_view_data(const fs::path& run_dir, const ViewLimits& limits) {
           static_cast<std::uint8_t>(std::min<std::uint16_t>(changes[next_change].state, 255));
       ++next_change;
     }
+    if (headings) {
+      headings->seekg(static_cast<std::streamoff>(kHeadingsHeaderBytes + step * robots));
+      if (!headings->read(reinterpret_cast<char*>(&heading[frame * robots]), robots)) {
+        refuse(run_dir / kHeadingsTraceFile,
+               "could not be read to its end (truncated while reading?)");
+      }
+    }
     for (std::size_t r = 0; r < robots; ++r) {
       pos[(frame * robots + r) * 2] = quantize(before[2 * r], scene.width_m);
       pos[(frame * robots + r) * 2 + 1] = quantize(before[2 * r + 1], scene.height_m);
-      heading[frame * robots + r] = quantize_heading(motion[2 * r], motion[2 * r + 1]);
+      if (!headings) heading[frame * robots + r] = motion_heading(motion[2 * r], motion[2 * r + 1]);
       if (robot_states) state[frame * robots + r] = current_state[r];
     }
   }
@@ -611,6 +657,7 @@ ViewData read_view_data(const fs::path& run_dir, const ViewLimits& limits) {
   meta["duration_s"] = duration_s;
   meta["frames"] = frames;
   meta["frame_s"] = step_s * static_cast<double>(stride);
+  meta["headings"] = headings ? "recorded" : "direction of motion";
   meta["states"] = states.labels();
   meta["kinds"] = kinds.labels();
   meta["summary"] = {{"pdr", summary.value("pdr", nlohmann::ordered_json())},

@@ -5,6 +5,8 @@
 // Read from the run directory:
 //   scenario.resolved.yaml  required: arena (size, obstacles, objects), robot radius, step
 //   positions.bin           required: every robot's position at every step
+//   headings.bin            optional: every robot's heading (runs before it existed: the
+//                           direction of motion stands in)
 //   summary.json            required: what ran (robots, steps, packets, pdr); its absence says the
 //                           run did not finish
 //   packets.csv             optional: messages (send, forward, deliver, drop)
@@ -21,7 +23,8 @@
 // The blob: arrays one after another, each starting at a multiple of 4 bytes, little-endian;
 // meta.arrays names each: {"name": [byte_offset, element_count, "Float32"|"Uint32"|...]}.
 //   pos      Uint16 [frames][robots][2]  x / width * 65535, y / height * 65535 (rounded, clamped)
-//   heading  Uint8  [frames][robots]     heading * 256 / 2pi (direction of the last motion)
+//   heading  Uint8  [frames][robots]     heading * 256 / 2pi (headings.bin, else the direction
+//                                        of the last motion; meta.headings says which)
 //   state    Uint8  [frames][robots]     index into meta.states (0 = none); only with states
 //   obj_t, obj_x, obj_y, obj_r Float32, obj_id Uint32, obj_kind, obj_state Uint16 [rows]: the
 //            world objects' changes in time order (obj_state 65535 = hidden)

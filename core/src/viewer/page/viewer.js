@@ -421,7 +421,7 @@
   }
   if (meta.events && meta.events.reasons.length) notes.push('Drop reasons: ' + meta.events.reasons.join(', ') + '.');
   if (meta.frame_s > meta.step_s) notes.push('Positions every ' + meta.frame_s.toFixed(2) + ' s, interpolated.');
-  notes.push('Headings: direction of motion. Wheel: zoom; drag: pan; hover a robot for details.');
+  notes.push('Headings: ' + meta.headings + '. Wheel: zoom; drag: pan; hover a robot for details.');
   document.getElementById('notes').textContent = notes.join(' ');
 
   // The panel's chart: delivery ratio (0..1, green) and mean delay (orange) per interval.
@@ -552,7 +552,14 @@
     const lines = ['robot ' + best, 'x ' + px[best].toFixed(2) + ' m, y ' + py[best].toFixed(2) + ' m'];
     if (A.state) lines.push('state ' + (states[A.state[frameA * N + best]] || '(none)'));
     if (A.r_sent) {
-      lines.push('messages over the run: sent ' + A.r_sent[best] + ', received ' + A.r_recv[best] +
+      // Up to now, from the events drawn (all of them unless thinned); over the run, exact.
+      const counts = [0, 0, 0, 0];
+      const end = upper(A.ev_t, t);
+      for (let i = 0; i < end; i++) if (A.ev_to[i] === best) counts[A.ev_kind[i]]++;
+      const thinned = meta.events.kept_every > 1 ? ' (1 in ' + meta.events.kept_every + ')' : '';
+      lines.push('messages so far' + thinned + ': sent ' + counts[0] + ', received ' + counts[2] +
+        ', relayed ' + counts[1] + ', dropped here ' + counts[3]);
+      lines.push('over the run: sent ' + A.r_sent[best] + ', received ' + A.r_recv[best] +
         ', relayed ' + A.r_fwd[best] + ', dropped here ' + A.r_drop[best]);
     }
     tip.textContent = lines.join('\n');
