@@ -124,6 +124,7 @@ struct Scene {
   double height_m = 0.0;
   double robot_radius_m = 0.0;
   double step_s = 0.0;
+  double link_range_m = 0.0;  // 0: none stated
   nlohmann::ordered_json obstacles = nlohmann::ordered_json::array();
   nlohmann::ordered_json movables = nlohmann::ordered_json::array();
 };
@@ -176,6 +177,16 @@ Scene read_scene(const fs::path& file) {
                                 {"x_m", yaml_real(o, "x_m", file, 0.0)},
                                 {"y_m", yaml_real(o, "y_m", file, 0.0)},
                                 {"heading_rad", yaml_real(o, "heading_rad", file, 0.0)}});
+    }
+  }
+  // The nominal radio range, when a propagation model states one (disk, range: params.range_m):
+  // what the page's links are drawn within.
+  if (const YAML::Node network = root["network"]; network && network["propagation"]) {
+    for (const YAML::Node& model : network["propagation"]) {
+      if (model["params"] && model["params"]["range_m"]) {
+        scene.link_range_m = yaml_real(model["params"], "range_m", file, 0.0);
+        break;
+      }
     }
   }
   return scene;
@@ -652,6 +663,8 @@ ViewData read_view_data(const fs::path& run_dir, const ViewLimits& limits) {
                    {"movables", scene.movables}};
   meta["robots"] = robots;
   meta["robot_radius_m"] = scene.robot_radius_m;
+  meta["link_range_m"] = scene.link_range_m > 0.0 ? nlohmann::ordered_json(scene.link_range_m)
+                                                  : nlohmann::ordered_json();
   meta["steps"] = header.steps;
   meta["step_s"] = step_s;
   meta["duration_s"] = duration_s;

@@ -6,8 +6,9 @@
 //                             frames K .. K+M-1 at times S + k/N drawn in turn, each put as a PNG
 //                             data URL on a line of <pre id="out"> (`swarmnet view --video/--png`)
 //   #bench&n=N&w=W&h=H        opening time and drawing time of N frames, as JSON in <pre id="out">
-// Common options: label=0 leaves out the time label; links=1&range=M draws the pairs within M
-// metres. Interactive only: play=1 starts playing at once.
+// Common options: label=0 leaves out the time label; links=1 draws the pairs within the nominal
+// range (meta.link_range_m, or range=M metres), green where a message hopped in the last second.
+// Interactive only: play=1 starts playing at once.
 // In every mode <div id="status"> ends as "ok", or "error: ..." with the message also shown.
 'use strict';
 (function () {
@@ -128,7 +129,6 @@
 
   // ---- drawing ------------------------------------------------------------------------------
   const showLabel = params.get('label') !== '0';
-  const showLinks = params.get('links') === '1';
   const trail = Math.max(1.0, 2 * meta.frame_s);  // seconds a message line stays
   let hovered = -1;
 
@@ -210,25 +210,55 @@
     }
   }
 
+  // Pairs within `linkRange` metres (a grid of cells of that size finds them): green when a
+  // message hopped between the two in the last `trail` seconds, else faint grey.
+  let showLinks = params.get('links') === '1';
+  let linkRange = Number(params.get('range') || meta.link_range_m || 0);
   function drawLinks(t) {
-    const range = Number(params.get('range') || 0);
-    if (!range) return;
-    ctx.strokeStyle = 'rgba(0, 0, 0, 0.07)';
-    ctx.lineWidth = 1;
-    ctx.beginPath();
-    const r2 = range * range;
+    if (!showLinks || !(linkRange > 0)) return;
+    const recent = new Set();
+    if (evCount) {
+      const end = upper(A.ev_t, t);
+      for (let i = upper(A.ev_t, t - trail); i < end; i++) {
+        const a = A.ev_from[i];
+        const b = A.ev_to[i];
+        if (a !== b) recent.add(Math.min(a, b) * N + Math.max(a, b));
+      }
+    }
+    const cells = new Map();
+    for (let k = 0; k < N; k++) {
+      const key = Math.floor(px[k] / linkRange) * 65536 + Math.floor(py[k] / linkRange);
+      let list = cells.get(key);
+      if (!list) cells.set(key, (list = []));
+      list.push(k);
+    }
+    const r2 = linkRange * linkRange;
+    const quiet = new Path2D();
+    const busy = new Path2D();
     for (let a = 0; a < N; a++) {
-      for (let b = a + 1; b < N; b++) {
-        const dx = px[a] - px[b];
-        const dy = py[a] - py[b];
-        if (dx * dx + dy * dy <= r2) {
-          ctx.moveTo(X(px[a]), Y(py[a]));
-          ctx.lineTo(X(px[b]), Y(py[b]));
+      const cx = Math.floor(px[a] / linkRange);
+      const cy = Math.floor(py[a] / linkRange);
+      for (let dx = -1; dx <= 1; dx++) {
+        for (let dy = -1; dy <= 1; dy++) {
+          const list = cells.get((cx + dx) * 65536 + cy + dy);
+          if (!list) continue;
+          for (const b of list) {
+            if (b <= a) continue;
+            const ex = px[a] - px[b];
+            const ey = py[a] - py[b];
+            if (ex * ex + ey * ey > r2) continue;
+            const path = recent.has(a * N + b) ? busy : quiet;
+            path.moveTo(X(px[a]), Y(py[a]));
+            path.lineTo(X(px[b]), Y(py[b]));
+          }
         }
       }
     }
-    ctx.stroke();
-    void t;
+    ctx.lineWidth = 1;
+    ctx.strokeStyle = 'rgba(0, 0, 0, 0.08)';
+    ctx.stroke(quiet);
+    ctx.strokeStyle = 'rgba(20, 150, 40, 0.35)';
+    ctx.stroke(busy);
   }
 
   // Messages in (t - trail, t]: forward hops grey, deliveries green, drops red crosses where the
@@ -326,7 +356,7 @@
     drawArena();
     drawMovables();
     drawObjects(t);
-    if (showLinks) drawLinks(t);
+    drawLinks(t);
     drawMessages(t);
     drawRobots();
     drawLabel(t);
@@ -415,6 +445,7 @@
     addLegend('rgb(210,30,30)', 'lost: where it died (hover for reasons)');
     addLegend('rgb(184,134,11)', 'message sent (ring)');
   }
+  addLegend('rgba(20,150,40,0.5)', 'link (links box): a message hopped in the last second');
   const notes = [];
   if (meta.events && meta.events.kept_every > 1) {
     notes.push('Packet events thinned: 1 in ' + meta.events.kept_every + ' drawn.');
@@ -509,6 +540,12 @@
   document.getElementById('back').onclick = () => stepFrame(-1);
   document.getElementById('fwd').onclick = () => stepFrame(1);
   document.getElementById('fit').onclick = () => { fit(); render(); };
+  const linksBox = document.getElementById('links');
+  const rangeBox = document.getElementById('range');
+  linksBox.checked = showLinks;
+  rangeBox.value = linkRange > 0 ? linkRange : '';
+  linksBox.onchange = () => { showLinks = linksBox.checked; render(); };
+  rangeBox.onchange = () => { linkRange = Number(rangeBox.value); render(); };
   slider.oninput = () => { t = Number(slider.value); render(); };
   window.addEventListener('keydown', (e) => {
     if (e.key === ' ') { setPlaying(!playing); e.preventDefault(); }
