@@ -191,7 +191,7 @@ def main():
 
         # The interactive page plays (play=1; virtual time drives its animation frames).
         dom = subprocess.run(chromium_command(chromium, work / "profile", [
-            "--window-size=1100,720", "--virtual-time-budget=2000",
+            "--window-size=1100,720", "--virtual-time-budget=3000",
             "--run-all-compositor-stages-before-draw", "--dump-dom", f"file://{page}#t=0&play=1"]),
             capture_output=True, text=True, timeout=120)
         clock = re.search(r'<span id="clock">([\d.]+) /', dom.stdout)

@@ -515,7 +515,7 @@
   }
   function tick(now) {
     if (!playing) return;
-    const dt = last ? (now - last) / 1000 : 0;
+    const dt = last ? (now - last) / 1000 : 1 / 60;  // the first frame after play: one 60th
     last = now;
     t = Math.min(duration, t + dt * Number(speed.value));
     if (t >= duration) setPlaying(false);
