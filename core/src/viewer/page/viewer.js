@@ -442,7 +442,7 @@
   if (evCount) {
     addLegend('rgb(90,90,90)', 'hop of a message (relay)');
     addLegend('rgb(20,150,40)', 'delivery (last hop)');
-    addLegend('rgb(210,30,30)', 'lost: where it died (hover for reasons)');
+    addLegend('rgb(210,30,30)', 'lost: where a copy died (reasons below)');
     addLegend('rgb(184,134,11)', 'message sent (ring)');
   }
   addLegend('rgba(20,150,40,0.5)', 'link (links box): a message hopped in the last second');
