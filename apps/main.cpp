@@ -1,4 +1,4 @@
-// The swarmnet command: run, validate, plugins, sweep, stats, plot, replay, bench.
+// The swarmnet command: run, validate, plugins, sweep, stats, plot, replay, view, bench.
 #include <CLI/CLI.hpp>
 #include <charconv>
 #include <chrono>
@@ -20,6 +20,7 @@
 #include "display/summary_printout.hpp"
 #include "experiments/stats_command.hpp"
 #include "experiments/sweep_command.hpp"
+#include "outputs/output_files.hpp"
 #include "outputs/run_directory.hpp"
 #include "plot_command.hpp"
 #include "plugin/plugin_catalog.hpp"
@@ -28,6 +29,8 @@
 #include "scenario/scenario_loader.hpp"
 #include "session/exit_codes.hpp"
 #include "session/run.hpp"
+#include "view_command.hpp"
+#include "viewer/view_page.hpp"
 
 namespace {
 
@@ -89,7 +92,7 @@ struct TransportArguments {
   double step_timeout_s = 60.0;
 };
 
-int run_command(ScenarioArguments args, bool quiet, bool overwrite,
+int run_command(ScenarioArguments args, bool quiet, bool overwrite, bool view,
                 const TransportArguments& transport) {
   if (args.file.empty()) args.file = swarmnet::default_scenario_path().string();
   swarmnet::PluginLoader loader;
@@ -111,6 +114,17 @@ int run_command(ScenarioArguments args, bool quiet, bool overwrite,
     swarmnet::install_stop_handlers();
     const auto outcome = swarmnet::run_scenario(scenario, loader, options);
     if (!quiet) swarmnet::print_summary(stdout, outcome.summary, outcome.dir);
+    if (view) {
+      const std::filesystem::path page = outcome.dir / swarmnet::kViewPageFile;
+      try {
+        swarmnet::write_view_page(outcome.dir, page);
+      } catch (const std::exception& error) {
+        return fail(kExitRunFailed, std::string("the run finished, but its page (--view) could "
+                                                "not be written: ") +
+                                        error.what());
+      }
+      if (!quiet) std::printf("viewer: %s\n", page.c_str());
+    }
   } catch (const std::exception& error) {
     const int signal = swarmnet::stop_signal();
     return fail(signal != 0 ? 128 + signal : kExitRunFailed, error.what());
@@ -177,6 +191,10 @@ static int run_main(int argc, char** argv) {
   run->add_option("file", run_args.file, "scenario file")->check(CLI::ExistingFile);
   add_scenario_options(run, run_args, true);
   run->add_flag("-q,--quiet", quiet, "print nothing but errors");
+  bool run_view = false;
+  run->add_flag("--view", run_view,
+                "write the replay page view.html into the run directory at the end (needs "
+                "output.mobility_trace; docs/viewer.md)");
   bool overwrite = false;
   run->add_flag("--overwrite", overwrite,
                 "replace an earlier run in the run directory (without it, such a directory is "
@@ -344,6 +362,32 @@ static int run_main(int argc, char** argv) {
   replay->add_option("--out", replay_out, "output directory (default RUN_DIR/replay)");
   replay->add_flag("-q,--quiet", replay_options.quiet, "print nothing but errors");
 
+  swarmnet::ViewCommandOptions view_options;
+  auto* view = app.add_subcommand(
+      "view",
+      "a run's replay in one self-contained HTML page, and videos and figures of it "
+      "(docs/viewer.md)");
+  view->add_option("run_dir", view_options.run_dir, "run directory")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  view->add_option("--out", view_options.out, "the page (default RUN_DIR/view.html)");
+  auto* video = view->add_option("--video", view_options.video,
+                                 "also render a video (MP4, H.264) with headless Chromium and "
+                                 "ffmpeg");
+  view->add_option("--fps", view_options.fps, "video frames per second")
+      ->capture_default_str()
+      ->needs(video);
+  view->add_option("--from", view_options.from_s, "video start, simulated s (default 0)")
+      ->needs(video);
+  view->add_option("--to", view_options.to_s, "video end, simulated s (default: the run's end)")
+      ->needs(video);
+  view->add_option("--size", view_options.size, "frame size WIDTHxHEIGHT in pixels")
+      ->capture_default_str();
+  view->add_option("--frame", view_options.frame_s, "draw the frame at T simulated s (with --png)");
+  view->add_option("--png", view_options.png, "the frame's PNG file (with --frame)");
+  view->add_flag("!--no-label", view_options.label, "leave the time label off frames and videos");
+  view->add_flag("-q,--quiet", view_options.quiet, "print nothing but errors");
+
   std::string bench_out = "runs/bench/transport.json";
   double bench_min_time = 0.5;
   auto* bench = app.add_subcommand("bench", "performance benchmarks");
@@ -378,7 +422,8 @@ static int run_main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     return app.exit(error) == 0 ? 0 : kExitBadInput;
   }
-  if (*run) return run_command(run_args, quiet, overwrite, transport);
+  if (*run) return run_command(run_args, quiet, overwrite, run_view, transport);
+  if (*view) return swarmnet::view_command(view_options);
   if (*clean) return clean_command(clean_dirs);
   if (*bench_transport) return swarmnet::bench_transport_command(bench_out, bench_min_time);
   if (*net) {

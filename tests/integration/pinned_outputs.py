@@ -2,7 +2,8 @@
 """Results change only on purpose: short reference runs whose output hashes are pinned in the tree.
 
 Runs each reference scenario below with the built `swarmnet`, hashes its outputs (packets.csv,
-positions.bin, mobility.ns2, traffic.csv, and summary.json without its timing fields) and compares
+positions.bin, mobility.ns2, traffic.csv, summary.json without its timing fields, headings.bin,
+and the task-allocation run's view_states.csv) and compares
 them with tests/integration/pinned_outputs.txt. A change that moves a result fails here; if the
 change is meant to move it, re-pin and say so in the commit:
 
@@ -36,7 +37,10 @@ RUNS = {
                         ["--set", "robots.count=10", "--set", "world.0.params.events=2",
                          "--set", "output.packet_trace=true"]),
 }
-FILES = ["packets.csv", "positions.bin", "mobility.ns2", "traffic.csv", "summary.json"]
+FILES = ["packets.csv", "positions.bin", "mobility.ns2", "traffic.csv", "summary.json",
+         "headings.bin"]
+# Outputs only some runs write: what the plugins showed the viewer (robot states, world objects).
+EXTRA_FILES = {"task-allocation": ["view_states.csv"]}
 # Fields of summary.json that measure the machine, not the simulation.
 TIMING = ["wall_s", "cpu_s", "realtime_factor", "transport_share"]
 
@@ -60,7 +64,7 @@ def measure(binary: str, work: pathlib.Path) -> dict:
         done = subprocess.run(command, cwd=SOURCE, capture_output=True, text=True)
         if done.returncode != 0:
             sys.exit(f"pinned_outputs: {' '.join(command)} failed:\n{done.stdout}{done.stderr}")
-        for file in FILES:
+        for file in FILES + EXTRA_FILES.get(name, []):
             hashes[f"{name} {file}"] = digest(out / file)
     return hashes
 

@@ -76,6 +76,12 @@ class RobotContext {
   // Adds one observation of a named metric; summary.json reports count, sum, mean, min and max.
   virtual void record(std::string_view metric, double value) = 0;
 
+  // For the viewer (`swarmnet view`, docs/viewer.md): this robot's state now, as a short label
+  // such as "exploring" ("" for none). Call it every step or only on a change: the run records
+  // a change only, with its time, in view_states.csv. The viewer gives each label a colour of
+  // its own and a legend; commas and line breaks in a label become '_'.
+  virtual void show_state(std::string_view label) = 0;
+
  protected:
   ~RobotContext() = default;
 };

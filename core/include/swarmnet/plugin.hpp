@@ -27,8 +27,9 @@ namespace swarmnet {
 
 // Bumped whenever a change to any SDK header changes the layout or the virtual tables that a
 // plugin and the kernel share. 3: RobotContext's ports, axle and arena; Physics::object_poses and
-// Arena::objects. 4: world plugins, RobotContext's readings and requests.
-inline constexpr std::uint32_t kAbiVersion = 4;
+// Arena::objects. 4: world plugins, RobotContext's readings and requests. 5:
+// RobotContext::show_state, WorldContext::show_object and hide_object (what the viewer draws).
+inline constexpr std::uint32_t kAbiVersion = 5;
 
 enum class PluginKind : std::uint8_t { physics, propagation, mac, routing, controller, world };
 

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -56,6 +57,16 @@ class WorldContext {
   // Adds one observation of a named metric; summary.json reports count, sum, mean, min and max
   // under "world", beside the controllers' metrics.
   virtual void record(std::string_view metric, double value) = 0;
+
+  // For the viewer (`swarmnet view`, docs/viewer.md): a thing of the task to draw, e.g. an
+  // event or a charger, as a disc of `radius_m` at `position`. `id` is the world's own (unique
+  // across the scenario's worlds), `kind` what it is ("event", "charger") and `state` how it is
+  // now ("unserviced"); the viewer colours each state and labels the disc with kind and id. Call
+  // it every step or only on a change: the run records a change only, with its time, in
+  // view_states.csv. hide_object() removes it from the drawing from now on.
+  virtual void show_object(std::uint32_t id, std::string_view kind, std::string_view state,
+                           Vec2 position, double radius_m) = 0;
+  virtual void hide_object(std::uint32_t id) = 0;
 
  protected:
   ~WorldContext() = default;

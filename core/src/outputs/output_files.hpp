@@ -9,7 +9,12 @@ inline constexpr const char* kLogFile = "run.log";
 inline constexpr const char* kPacketTraceFile = "packets.csv";
 inline constexpr const char* kMobilityTraceFile = "mobility.ns2";
 inline constexpr const char* kPositionsTraceFile = "positions.bin";  // outputs/positions_trace.hpp
+inline constexpr const char* kHeadingsTraceFile = "headings.bin";    // outputs/headings_trace.hpp
 inline constexpr const char* kTrafficScheduleFile = "traffic.csv";
 inline constexpr const char* kObjectTraceFile = "objects.csv";  // outputs/object_trace.hpp
+// What plugins asked the viewer to show (robot/view_record.hpp); only when one did.
+inline constexpr const char* kViewStatesFile = "view_states.csv";
+// The replay page `swarmnet view` and `swarmnet run --view` write (docs/viewer.md).
+inline constexpr const char* kViewPageFile = "view.html";
 
 }  // namespace swarmnet

@@ -11,8 +11,10 @@ namespace swarmnet {
 namespace {
 
 constexpr std::array kOutputFiles = {
-    kSummaryFile,        kResolvedScenarioFile, kLogFile, kPacketTraceFile, kMobilityTraceFile,
-    kPositionsTraceFile, kTrafficScheduleFile};
+    kSummaryFile,         kResolvedScenarioFile, kLogFile,
+    kPacketTraceFile,     kMobilityTraceFile,    kPositionsTraceFile,
+    kTrafficScheduleFile, kObjectTraceFile,      kViewStatesFile,
+    kViewPageFile,        kHeadingsTraceFile};
 
 bool is_output_file(const std::string& name) {
   return std::find(kOutputFiles.begin(), kOutputFiles.end(), name) != kOutputFiles.end();

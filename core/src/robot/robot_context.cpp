@@ -77,4 +77,8 @@ void WorldRobotContext::record(std::string_view metric, double value) {
   record_metric(state_->metrics, metric, value);
 }
 
+void WorldRobotContext::show_state(std::string_view label) {
+  state_->view.robot_state(state_->now, id_, label);
+}
+
 }  // namespace swarmnet

@@ -9,6 +9,7 @@
 
 #include "protocol/step_data.hpp"
 #include "robot/controller_metrics.hpp"
+#include "robot/view_record.hpp"
 #include "swarmnet/controller.hpp"
 #include "swarmnet/robot_body.hpp"
 
@@ -48,6 +49,7 @@ struct RobotWorldState {
   // switch-off asked for during a step is pending (2) until the next step begins.
   std::vector<std::uint8_t> switched_off;
   WorldPlugins* worlds = nullptr;  // answers readings and requests; owned by RobotWorld
+  ViewRecord view;                 // what controllers and worlds asked the viewer to show
 };
 
 // The sensors and actuators of one robot.
@@ -80,6 +82,7 @@ class WorldRobotContext final : public RobotContext {
   std::uint64_t send(RobotId destination, std::span<const std::byte> payload) override;
   void request(std::string_view name, std::span<const double> args) override;
   void record(std::string_view metric, double value) override;
+  void show_state(std::string_view label) override;
 
  private:
   [[nodiscard]] const RobotBody& body() const { return state_->bodies[id_]; }

@@ -73,6 +73,8 @@ class RobotWorld {
   void end_worlds() { worlds_->end(); }
 
   [[nodiscard]] const ControllerMetrics& controller_metrics() const { return state_.metrics; }
+  // What controllers and worlds asked the viewer to show (robot/view_record.hpp).
+  [[nodiscard]] const ViewRecord& view_record() const { return state_.view; }
   [[nodiscard]] const ControllerMetrics& world_metrics() const { return worlds_->metrics(); }
 
  private:

@@ -141,4 +141,11 @@ void WorldPlugins::record(std::string_view metric, double value) {
   record_metric(metrics_, metric, value);
 }
 
+void WorldPlugins::show_object(std::uint32_t id, std::string_view kind, std::string_view state,
+                               Vec2 position, double radius_m) {
+  state_.view.object(state_.now, id, kind, state, position, radius_m);
+}
+
+void WorldPlugins::hide_object(std::uint32_t id) { state_.view.hide(state_.now, id); }
+
 }  // namespace swarmnet

@@ -16,6 +16,7 @@
 #include "coupling/stop_signal.hpp"
 #include "display/progress_line.hpp"
 #include "outputs/atomic_file.hpp"
+#include "outputs/headings_trace.hpp"
 #include "outputs/mobility_trace.hpp"
 #include "outputs/object_trace.hpp"
 #include "outputs/output_files.hpp"
@@ -116,8 +117,9 @@ struct RobotLoop {
 // returns the network half's report.
 NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, StepChannel& channel,
                                MobilityTraceWriter* mobility, PositionsTraceWriter* positions,
-                               ObjectTraceWriter* objects, TrafficScheduleWriter* traffic,
-                               ProgressLine& progress, RobotLoop& loop) {
+                               HeadingsTraceWriter* headings, ObjectTraceWriter* objects,
+                               TrafficScheduleWriter* traffic, ProgressLine& progress,
+                               RobotLoop& loop) {
   const std::uint64_t steps = scenario.step_count();
   const std::uint64_t lag = delivery_lag(scenario.sync);
   StepBatch batch;
@@ -150,6 +152,7 @@ NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, Step
     for (std::size_t i = 0; i < bodies.size(); ++i) batch.positions[i] = bodies[i].position;
     if (mobility != nullptr) mobility->sample(step, batch.positions);
     if (positions != nullptr) positions->sample(batch.positions);
+    if (headings != nullptr) headings->sample(bodies);
     if (objects != nullptr) objects->sample(step, world.object_poses());
 
     batch.messages.clear();
@@ -210,6 +213,14 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
       positions.emplace(positions_file->stream(), scenario.robots.count, scenario.step_count(),
                         from_seconds(scenario.step_s));
     }
+    // Headings beside them, for the viewer.
+    std::optional<AtomicFile> headings_file;
+    std::optional<HeadingsTraceWriter> headings;
+    if (scenario.output.mobility_trace) {
+      headings_file.emplace(outcome.dir / kHeadingsTraceFile);
+      headings.emplace(headings_file->stream(), scenario.robots.count, scenario.step_count(),
+                       from_seconds(scenario.step_s));
+    }
     // The movable objects' poses, written with the robots' positions.
     std::optional<AtomicFile> objects_file;
     std::optional<ObjectTraceWriter> objects;
@@ -241,7 +252,8 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
         handshake(scenario, outcome.dir, channel);
         link->connected();
         report = drive_robot_half(scenario, world, channel, mobility ? &*mobility : nullptr,
-                                  positions ? &*positions : nullptr, objects ? &*objects : nullptr,
+                                  positions ? &*positions : nullptr,
+                                  headings ? &*headings : nullptr, objects ? &*objects : nullptr,
                                   traffic ? &*traffic : nullptr, progress, loop);
       } catch (const PeerLost& error) {
         robot_error = error.what();
@@ -275,10 +287,17 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
 
     world.end_worlds();
     if (positions) positions->finish();
+    if (headings) headings->finish();
     if (mobility_file) mobility_file->commit();
     if (positions_file) positions_file->commit();
+    if (headings_file) headings_file->commit();
     if (objects_file) objects_file->commit();
     if (traffic_file) traffic_file->commit();
+    if (!world.view_record().empty()) {
+      AtomicFile view_file(outcome.dir / kViewStatesFile);
+      world.view_record().write_csv(view_file.stream());
+      view_file.commit();
+    }
 
     SummaryInputs summary;
     summary.scenario = &scenario;

@@ -160,6 +160,22 @@ void TaskAllocation::broadcast(RobotContext& robot, MessageType type, std::uint3
   if (known != nullptr) broadcast(robot, type, id, known->waiting);
 }
 
+const char* TaskAllocation::mode_name(Mode mode) {
+  switch (mode) {
+    case Mode::exploring:
+      return "exploring";
+    case Mode::going:
+      return "going";
+    case Mode::waiting:
+      return "waiting";
+    case Mode::to_charger:
+      return "to_charger";
+    case Mode::charging:
+      return "charging";
+  }
+  return "unknown";
+}
+
 void TaskAllocation::control_step(RobotContext& robot) {
   skills_ = read_skills(robot);
   const Battery battery = read_battery(robot);
@@ -197,6 +213,7 @@ void TaskAllocation::control_step(RobotContext& robot) {
       step_charging(robot, battery);
       break;
   }
+  robot.show_state(mode_name(state_.mode));
 }
 
 bool TaskAllocation::receive(RobotContext& robot) {

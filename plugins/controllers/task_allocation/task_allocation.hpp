@@ -39,6 +39,8 @@ namespace swarmnet::task_allocation {
 class TaskAllocation final : public Controller {
  public:
   enum class Mode : std::uint8_t { exploring, going, waiting, to_charger, charging };
+  // "exploring", "going", ...: what the robot shows the viewer (RobotContext::show_state).
+  [[nodiscard]] static const char* mode_name(Mode mode);
 
   static PluginInfo info();
   explicit TaskAllocation(const PluginArgs& args);

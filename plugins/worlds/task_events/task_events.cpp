@@ -112,6 +112,7 @@ void TaskEvents::setup(WorldContext& world) {
     if (static_cast<std::uint32_t>(able) < required_) ++infeasible;
   }
   world.record("infeasible_events", static_cast<double>(infeasible));
+  show(world);
 }
 
 bool TaskEvents::has_skill(const RobotState& robot, std::uint32_t skill) const {
@@ -125,6 +126,17 @@ bool TaskEvents::at_charger(const Vec2& position) const {
 void TaskEvents::post_step(WorldContext& world) {
   update_energy(world);
   update_events(world);
+  show(world);
+}
+
+void TaskEvents::show(WorldContext& world) const {
+  for (const TaskEvent& event : events_) {
+    const char* state = event.serviced      ? "serviced"
+                        : event.waiting > 0 ? "being serviced"
+                                            : "unserviced";
+    world.show_object(event.id, "event", state, event.position, service_radius_m_);
+  }
+  world.show_object(event_count_, "charger", "charger", charger_, charger_radius_m_);
 }
 
 void TaskEvents::update_energy(WorldContext& world) {

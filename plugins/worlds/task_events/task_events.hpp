@@ -4,6 +4,10 @@
 // arena's centre; servicing an event recharges the robots that did it. The task is done when
 // every event is serviced.
 //
+// The viewer (docs/viewer.md) is shown every event as a disc of service_radius_m in state
+// "unserviced", "being serviced" (robots wait there) or "serviced", and the charger (object id =
+// events) as a disc of charger_radius_m.
+//
 // Readings (per robot):
 //   battery         [fraction 0..1, low]  low = 1 below low_energy_fraction: go and charge
 //   skills          the robot's skill ids, ascending
@@ -59,6 +63,8 @@ class TaskEvents final : public World {
 
   [[nodiscard]] bool has_skill(const RobotState& robot, std::uint32_t skill) const;
   [[nodiscard]] bool at_charger(const Vec2& position) const;
+  // For the viewer: every event (id, "event", its state) and the charger (id = events).
+  void show(WorldContext& world) const;
   // Battery and distance of every robot over the step just taken.
   void update_energy(WorldContext& world);
   // Waiting counts and service clocks; services events whose time is up.

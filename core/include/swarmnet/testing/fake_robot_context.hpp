@@ -57,6 +57,7 @@ class FakeRobotContext final : public RobotContext {
   std::vector<Sent> sent;
   std::vector<Request> requests;                                     // in the order made
   std::map<std::string, std::vector<double>, std::less<>> recorded;  // metric -> observations
+  std::string shown_state;                                           // the last show_state()
 
   [[nodiscard]] RobotId id() const override { return robot_id; }
   [[nodiscard]] std::size_t robot_count() const override { return robots; }
@@ -102,6 +103,7 @@ class FakeRobotContext final : public RobotContext {
       it = recorded.emplace(std::string(metric), std::vector<double>{}).first;
     it->second.push_back(value);
   }
+  void show_state(std::string_view label) override { shown_state = label; }
 
   // Every ray clear.
   void clear_rays() { std::fill(rays.begin(), rays.end(), range_m); }

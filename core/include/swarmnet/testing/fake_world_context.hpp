@@ -33,6 +33,14 @@ class FakeWorldContext final : public WorldContext {
   // Effects: read by the test.
   std::vector<bool> off;
   std::map<std::string, std::vector<double>, std::less<>> recorded;  // metric -> observations
+  // What show_object() last said of each object id; hide_object() removes the entry.
+  struct ShownObject {
+    std::string kind;
+    std::string state;
+    Vec2 position;
+    double radius_m;
+  };
+  std::map<std::uint32_t, ShownObject> shown;
 
   [[nodiscard]] const Arena& arena() const override { return world; }
   [[nodiscard]] std::size_t robot_count() const override { return positions.size(); }
@@ -49,6 +57,11 @@ class FakeWorldContext final : public WorldContext {
       it = recorded.emplace(std::string(metric), std::vector<double>{}).first;
     it->second.push_back(value);
   }
+  void show_object(std::uint32_t id, std::string_view kind, std::string_view state, Vec2 position,
+                   double radius_m) override {
+    shown[id] = ShownObject{std::string(kind), std::string(state), position, radius_m};
+  }
+  void hide_object(std::uint32_t id) override { shown.erase(id); }
 
   // One step of a world plugin as the kernel runs it: pre_step at now, time advances by one
   // step (the test moves the robots before or after), post_step at the new time.

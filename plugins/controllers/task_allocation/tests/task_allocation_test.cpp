@@ -298,6 +298,7 @@ TEST_F(TaskAllocationTest, LowBatteryWhileGoingCancelsAndHeadsForTheCharger) {
   step();
   EXPECT_EQ(types(), "GC");
   EXPECT_EQ(controller->mode(), Mode::to_charger);
+  EXPECT_EQ(robot.shown_state, "to_charger");  // what the viewer draws
   // The charger is due north, 90 degrees left: it turns counter-clockwise in place.
   EXPECT_GT(robot.right_mps, 0.0);
   EXPECT_LT(robot.left_mps, 0.0);
@@ -310,6 +311,7 @@ TEST_F(TaskAllocationTest, LowBatteryWhileGoingCancelsAndHeadsForTheCharger) {
   robot.pose_position = Vec2(252.0, 250.0);
   step();
   EXPECT_EQ(controller->mode(), Mode::charging);
+  EXPECT_EQ(robot.shown_state, "charging");
   EXPECT_EQ(count("charges"), 1U);
   robot.readings["battery"] = {0.8, 0.0};
   step();
@@ -319,6 +321,7 @@ TEST_F(TaskAllocationTest, LowBatteryWhileGoingCancelsAndHeadsForTheCharger) {
   step();
   // Charged: the rule runs again and event 2 (needing robots) is chosen.
   EXPECT_EQ(controller->mode(), Mode::going);
+  EXPECT_EQ(robot.shown_state, "going");
   EXPECT_EQ(controller->event(), 2U);
 }
 

@@ -108,6 +108,13 @@ TEST(TaskEventsTest, ServicedOnlyWhenEnoughRobotsAreThereTogetherForTheServiceTi
   run_steps(s, 600);  // three robots for 60 s: not enough
   EXPECT_EQ(read(s, 0, "joined"), (std::vector<double>{0.0, 3.0, 0.0}));
 
+  EXPECT_EQ(s.world.shown.at(0).state, "being serviced");  // what the viewer draws
+  EXPECT_EQ(s.world.shown.at(1).state, "unserviced");
+  EXPECT_EQ(s.world.shown.at(0).kind, "event");
+  EXPECT_EQ(s.world.shown.at(0).position, at);
+  EXPECT_EQ(s.world.shown.at(2).kind, "charger");  // after the events
+  EXPECT_EQ(s.world.shown.at(2).position, Vec2(250.0, 250.0));
+
   join(s, 3, 0);
   run_steps(s, 499);
   const std::vector<double> joined = read(s, 0, "joined");
@@ -121,6 +128,7 @@ TEST(TaskEventsTest, ServicedOnlyWhenEnoughRobotsAreThereTogetherForTheServiceTi
   ASSERT_EQ(s.world.recorded.at("events_serviced").size(), 1u);
   EXPECT_NEAR(s.world.recorded.at("events_serviced")[0], 110.0, 1e-9);
   EXPECT_FALSE(s.plugin->task_done());  // one event left
+  EXPECT_EQ(s.world.shown.at(0).state, "serviced");
   s.world.positions[4] = at;
   EXPECT_TRUE(read(s, 4, "events_in_view").empty() ||
               read(s, 4, "events_in_view")[0] != 0.0);  // a serviced event is not seen
