@@ -205,21 +205,19 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
           std::llround(scenario.output.mobility_interval_s / scenario.step_s));
       mobility.emplace(mobility_file->stream(), interval, scenario.step_s);
     }
-    // Exact positions of every step beside the rounded ns-2 trace, for `swarmnet replay`.
+    // Exact positions of every step beside the rounded ns-2 trace, for `swarmnet replay`, and
+    // the headings beside them, for the viewer.
     std::optional<AtomicFile> positions_file;
     std::optional<PositionsTraceWriter> positions;
-    if (scenario.output.mobility_trace) {
-      positions_file.emplace(outcome.dir / kPositionsTraceFile);
-      positions.emplace(positions_file->stream(), scenario.robots.count, scenario.step_count(),
-                        from_seconds(scenario.step_s));
-    }
-    // Headings beside them, for the viewer.
     std::optional<AtomicFile> headings_file;
     std::optional<HeadingsTraceWriter> headings;
     if (scenario.output.mobility_trace) {
+      const SimTime step = from_seconds(scenario.step_s);
+      positions_file.emplace(outcome.dir / kPositionsTraceFile);
+      positions.emplace(positions_file->stream(), scenario.robots.count, scenario.step_count(),
+                        step);
       headings_file.emplace(outcome.dir / kHeadingsTraceFile);
-      headings.emplace(headings_file->stream(), scenario.robots.count, scenario.step_count(),
-                       from_seconds(scenario.step_s));
+      headings.emplace(headings_file->stream(), scenario.robots.count, scenario.step_count(), step);
     }
     // The movable objects' poses, written with the robots' positions.
     std::optional<AtomicFile> objects_file;
