@@ -26,10 +26,11 @@ constexpr auto kStopBound = std::chrono::seconds(5);
 // A `swarmnet run` started in the background, its output going to a file.
 class BackgroundRun {
  public:
-  BackgroundRun(const TempDir& dir, const std::vector<std::string>& extra)
+  BackgroundRun(const TempDir& dir, const std::vector<std::string>& extra,
+                const std::string& scenario = "quickstart.yaml")
       : log_(dir.path() / "out.txt") {
     std::vector<std::string> args = {"run",
-                                     std::string(SWARMNET_SOURCE_DIR) + "/configs/quickstart.yaml",
+                                     std::string(SWARMNET_SOURCE_DIR) + "/configs/" + scenario,
                                      "--quiet",
                                      "--set",
                                      "duration_s=100000",
@@ -121,9 +122,9 @@ void expect_nothing_left(const TempDir& dir, pid_t run) {
   }
 }
 
-TEST(PeerFailure, KilledNetworkHalfEndsTheRunWithItsCause) {
+void expect_killed_network_half_reported(const std::string& scenario) {
   TempDir dir;
-  BackgroundRun run(dir, {});
+  BackgroundRun run(dir, {}, scenario);
   const pid_t network = run.network_half();
   ASSERT_GT(network, 0) << run.output();
   ASSERT_EQ(::kill(network, SIGKILL), 0);
@@ -137,6 +138,17 @@ TEST(PeerFailure, KilledNetworkHalfEndsTheRunWithItsCause) {
       << out;
   expect_nothing_left(dir, run.pid());
 }
+
+TEST(PeerFailure, KilledNetworkHalfEndsTheRunWithItsCause) {
+  expect_killed_network_half_reported("quickstart.yaml");
+}
+
+#ifdef SWARMNET_HAVE_NS3
+// The ns-3 engine's half is the same `swarmnet net` process with ns-3 loaded in it.
+TEST(PeerFailure, KilledNs3NetworkHalfEndsTheRunWithItsCause) {
+  expect_killed_network_half_reported("ns3.yaml");
+}
+#endif
 
 TEST(PeerFailure, KilledRobotHalfTakesTheNetworkHalfDown) {
   TempDir dir;

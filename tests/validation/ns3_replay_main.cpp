@@ -58,7 +58,8 @@ struct Options {
   std::uint32_t rts_threshold_bytes = 65535;
   std::uint32_t queue_packets = 0;  // 0: ns-3's default
   // ARP entries filled in advance: "permanent", or "auto-generated" as NeighborCacheHelper
-  // leaves them (then ns-3's AODV cannot map a neighbour to its MAC address: no layer-2 feedback).
+  // leaves them (then ns-3's AODV cannot map a neighbour to its MAC address: no layer-2
+  // feedback), or "none" (ARP resolves by request and reply, ns-3's default stack).
   std::string arp_entries = "auto-generated";
   double queue_max_delay_s = 0.0;  // 0: ns-3's default
   // Flooding.
@@ -543,9 +544,10 @@ nlohmann::ordered_json run(const Options& options) {
   ns3::Ipv4AddressHelper addresses;
   addresses.SetBase("10.1.0.0", kSubnetMask);
   const ns3::Ipv4InterfaceContainer interfaces = addresses.Assign(devices);
-  // No ARP exchange: SwarmNet has none, and ns-3's ARP would add frames and drop packets queued
-  // behind a pending resolution.
-  ns3::NeighborCacheHelper().PopulateNeighborCache();
+  // By default no ARP exchange: SwarmNet's own engine has none, and ns-3's ARP would add frames
+  // and drop packets queued behind a pending resolution. `none` leaves ARP as ns-3 users run it
+  // (and as the ns-3 engine runs it).
+  if (options.arp_entries != "none") ns3::NeighborCacheHelper().PopulateNeighborCache();
   if (options.arp_entries == "permanent") make_arp_entries_permanent(nodes, interfaces);
 
   std::int64_t stream = 1000;
@@ -765,8 +767,9 @@ int main(int argc, char** argv) {
                  "WifiMacQueue MaxDelay (0: ns-3's default, 0.5 s)");
   app.add_option("--arp-entries", options.arp_entries,
                  "state of the ARP entries filled in advance (auto-generated: ns-3's AODV gets "
-                 "no layer-2 link-break feedback)")
-      ->check(CLI::IsMember({"permanent", "auto-generated"}))
+                 "no layer-2 link-break feedback; none: no entry filled, ARP resolves as in "
+                 "ns-3's default stack)")
+      ->check(CLI::IsMember({"permanent", "auto-generated", "none"}))
       ->capture_default_str();
   app.add_option("--flooding-ttl", options.flooding.ttl, "flooding: hops a packet may travel")
       ->check(CLI::Range(1, 255))

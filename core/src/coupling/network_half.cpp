@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "coupling/cpu_clock.hpp"
-#include "network/network_simulator.hpp"
+#include "coupling/network_engine_choice.hpp"
 #include "outputs/atomic_file.hpp"
 #include "outputs/output_files.hpp"
 #include "outputs/run_error.hpp"
@@ -20,8 +20,9 @@ void serve(const Scenario& scenario, PluginLoader& loader, StepChannel& channel,
   double transport_cpu = 0.0;
   std::optional<AtomicFile> trace;
   if (scenario.output.packet_trace) trace.emplace(run_dir / kPacketTraceFile);
-  NetworkSimulator simulator(scenario.network_settings(), loader,
-                             trace ? &trace->stream() : nullptr);
+  const std::unique_ptr<NetworkEngine> engine =
+      make_network_engine(scenario, loader, trace ? &trace->stream() : nullptr);
+  NetworkEngine& simulator = *engine;
 
   StepBatch batch;
   StepResult result;

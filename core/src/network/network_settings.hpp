@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "plugin/plugin_choice.hpp"
@@ -31,6 +32,29 @@ struct PhyConfig {
   double sensing_floor_db = -100.0;
 };
 
+// Which simulator is the network half (DESIGN.md section 3): SwarmNet's own, or ns-3.37 in a
+// module of its own (core/src/ns3_engine/, docs/ns3-engine.md).
+enum class NetworkEngineKind : std::uint8_t { native, ns3 };
+
+inline const char* to_string(NetworkEngineKind engine) {
+  return engine == NetworkEngineKind::native ? "native" : "ns3";
+}
+
+// Options of the ns-3 engine that SwarmNet's own has no counterpart for (`network.ns3:`).
+struct Ns3Options {
+  std::string standard = "80211a";        // 80211a, 80211b, 80211g, 80211n, 80211ac
+  std::string rate_manager = "constant";  // constant, arf, aarf, minstrel, minstrel_ht, ideal
+  std::string data_mode;     // constant: WifiMode of data frames; empty: from the MAC's rate
+  std::string control_mode;  // constant: WifiMode of control frames; empty: from the MAC's rate
+  std::string ip_routing = "none";        // under the `direct` plugin: none (one hop), olsr, dsdv
+  std::string error_rate_model = "nist";  // nist (SwarmNet's sinr model), table, yans
+  std::string arp = "dynamic";            // dynamic (ns-3's ARP) or static (entries pre-filled)
+  double olsr_hello_interval_s = 2.0;
+  double olsr_tc_interval_s = 5.0;
+  double dsdv_periodic_update_interval_s = 15.0;
+  double dsdv_settling_time_s = 5.0;
+};
+
 struct ChannelConfig {
   bool cutoff = true;  // visit only nodes that can possibly hear a frame (DESIGN.md section 7)
 };
@@ -42,6 +66,8 @@ struct NetworkConfig {
   ChannelConfig channel;
   PluginChoice mac;
   PluginChoice routing;
+  NetworkEngineKind engine = NetworkEngineKind::native;
+  Ns3Options ns3;
 };
 
 struct NetworkSettings {

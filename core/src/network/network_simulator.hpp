@@ -17,6 +17,7 @@
 
 #include "network/application_layer.hpp"
 #include "network/channel.hpp"
+#include "network/network_engine.hpp"
 #include "network/network_metrics.hpp"
 #include "network/network_settings.hpp"
 #include "network/node.hpp"
@@ -28,7 +29,7 @@
 
 namespace swarmnet {
 
-class NetworkSimulator {
+class NetworkSimulator final : public NetworkEngine {
  public:
   // `packet_trace` may be null (no trace); it must outlive finish(). Creates one node per robot,
   // one MAC and one routing instance per node, and the propagation chain, then calls attach() on
@@ -41,7 +42,7 @@ class NetworkSimulator {
   NetworkSimulator& operator=(const NetworkSimulator&) = delete;
   NetworkSimulator(NetworkSimulator&&) = delete;
   NetworkSimulator& operator=(NetworkSimulator&&) = delete;
-  ~NetworkSimulator();
+  ~NetworkSimulator() override;
 
   // Simulates [batch.start, batch.start + step): places the nodes at batch.positions (held over
   // the window), injects each message at batch.start + injection_offset(seed, message id, step),
@@ -49,13 +50,13 @@ class NetworkSimulator {
   // order, events run in the window). batch.start must not be before the end of the previous
   // window; a batch with the wrong number of positions or a message from/to an unknown robot is
   // refused with std::invalid_argument before anything is simulated.
-  void run_step(const StepBatch& batch, StepResult& result);
+  void run_step(const StepBatch& batch, StepResult& result) override;
 
   // Metrics so far (keys and definitions: network_metrics.hpp).
-  [[nodiscard]] NetworkReport report() const;
+  [[nodiscard]] NetworkReport report() const override;
 
   // Flushes the packet trace (there is no footer); call once, at the end.
-  void finish();
+  void finish() override;
 
   [[nodiscard]] SimTime now() const { return scheduler_.now(); }
   [[nodiscard]] SimTime step_length() const { return step_; }

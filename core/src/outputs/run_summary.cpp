@@ -94,6 +94,7 @@ Json build_summary(const SummaryInputs& in) {
   }
   if (!in.replay_of) s["sync"] = to_string(scenario.sync);
   if (in.transport) s["transport"] = *in.transport;
+  s["engine"] = to_string(scenario.network.engine);
   s["wall_s"] = t.wall_s;
   if (t.robot_cpu_s && t.transport_cpu_s) {
     s["cpu_s"] = {{"robot", *t.robot_cpu_s},

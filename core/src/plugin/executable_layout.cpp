@@ -10,9 +10,10 @@ ExecutableLayout layout_around(const std::filesystem::path& executable) {
       root / SWARMNET_INSTALL_LIBDIR / "swarmnet" / "plugins";
   std::error_code ec;
   if (std::filesystem::is_directory(installed_plugins, ec)) {
-    return {installed_plugins, root / SWARMNET_INSTALL_DATADIR / "swarmnet"};
+    return {installed_plugins, root / SWARMNET_INSTALL_DATADIR / "swarmnet",
+            root / SWARMNET_INSTALL_LIBDIR / "swarmnet" / "engines"};
   }
-  return {root / "plugins", root / "share" / "swarmnet"};
+  return {root / "plugins", root / "share" / "swarmnet", root / "engines"};
 }
 
 std::filesystem::path running_executable() {

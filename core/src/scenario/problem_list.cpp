@@ -6,6 +6,13 @@ void ProblemList::mark_overridden(KeyPath path, std::string origin) {
   overrides_.push_back({std::move(path), std::move(origin)});
 }
 
+bool ProblemList::overridden(const KeyPath& path) const {
+  for (const auto& entry : overrides_) {
+    if (path.starts_with(entry.path)) return true;
+  }
+  return false;
+}
+
 std::string ProblemList::locate(const KeyPath& path, const YAML::Mark& mark) const {
   // The most specific override covering `path` wins; later overrides win over earlier ones.
   const Override* covering = nullptr;

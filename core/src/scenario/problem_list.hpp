@@ -22,6 +22,9 @@ class ProblemList {
   // Values at `path` and below were set by the command-line option `origin`.
   void mark_overridden(KeyPath path, std::string origin);
 
+  // True when a command-line option set the value at `path` (or a mapping holding it).
+  [[nodiscard]] bool overridden(const KeyPath& path) const;
+
   // Where the value at `path` (whose YAML mark is `mark`) came from.
   [[nodiscard]] std::string locate(const KeyPath& path, const YAML::Mark& mark) const;
 

@@ -74,6 +74,14 @@ YAML::Mark ScenarioChecker::mark_of(const KeyPath& path) const {
   return it != marks_.end() ? it->second : YAML::Mark::null_mark();
 }
 
+bool ScenarioChecker::given(const KeyPath& path) const {
+  if (!marks_.contains(path.text())) return false;
+  for (const auto& defaulted : defaulted_) {
+    if (path.starts_with(defaulted)) return false;
+  }
+  return true;
+}
+
 std::optional<YAML::Node> ScenarioChecker::check(const KeySpec& spec, const YAML::Node& value,
                                                  const Where& where) {
   remember(where);
@@ -131,7 +139,10 @@ std::optional<YAML::Node> ScenarioChecker::absent(const KeySpec& spec, const Whe
     return std::nullopt;
   }
   if (!spec.computed.empty()) return std::nullopt;  // derived after the check
-  if (spec.default_yaml) return check(spec, YAML::Load(*spec.default_yaml), where);
+  if (spec.default_yaml) {
+    defaulted_.push_back(where.path);
+    return check(spec, YAML::Load(*spec.default_yaml), where);
+  }
   if (spec.form == KeyForm::map || spec.form == KeyForm::plugin) {
     return check(spec, YAML::Node(YAML::NodeType::Null), where);
   }

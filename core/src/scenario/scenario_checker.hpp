@@ -31,8 +31,13 @@ class ScenarioChecker {
   // Every valid plugin key, by key path text ("network.routing", "robots.controllers.0").
   [[nodiscard]] const std::map<std::string, PluginChoice>& plugins() const { return plugins_; }
 
-  // The YAML mark of the value checked at `path` (null when it was absent).
+  // The YAML mark of the value checked at `path`: of the value, or of the nearest mapping given
+  // when the value took its default; null when it was never checked.
   [[nodiscard]] YAML::Mark mark_of(const KeyPath& path) const;
+
+  // True when the scenario gave the value at `path` itself (it did not take a default, alone or
+  // as part of a defaulted mapping).
+  [[nodiscard]] bool given(const KeyPath& path) const;
 
  private:
   struct Where {
@@ -74,6 +79,7 @@ class ScenarioChecker {
   std::filesystem::path base_dir_;
   std::map<std::string, PluginChoice> plugins_;
   std::map<std::string, YAML::Mark> marks_;
+  std::vector<KeyPath> defaulted_;  // keys that were absent and took their schema default
 };
 
 }  // namespace swarmnet

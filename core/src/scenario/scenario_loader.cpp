@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "scenario/ns3_engine_check.hpp"
 #include "scenario/problem_list.hpp"
 #include "scenario/scenario_checker.hpp"
 #include "scenario/scenario_consistency.hpp"
@@ -148,6 +149,21 @@ Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>
   s.network.channel.cutoff = network["channel"]["cutoff"].as<bool>();
   s.network.mac = plugin("network.mac");
   s.network.routing = plugin("network.routing");
+  s.network.engine = network["engine"].as<std::string>() == "ns3" ? NetworkEngineKind::ns3
+                                                                  : NetworkEngineKind::native;
+  const YAML::Node ns3 = network["ns3"];
+  s.network.ns3.standard = ns3["standard"].as<std::string>();
+  s.network.ns3.rate_manager = ns3["rate_manager"].as<std::string>();
+  if (ns3["data_mode"]) s.network.ns3.data_mode = ns3["data_mode"].as<std::string>();
+  if (ns3["control_mode"]) s.network.ns3.control_mode = ns3["control_mode"].as<std::string>();
+  s.network.ns3.ip_routing = ns3["ip_routing"].as<std::string>();
+  s.network.ns3.error_rate_model = ns3["error_rate_model"].as<std::string>();
+  s.network.ns3.arp = ns3["arp"].as<std::string>();
+  s.network.ns3.olsr_hello_interval_s = ns3["olsr_hello_interval_s"].as<double>();
+  s.network.ns3.olsr_tc_interval_s = ns3["olsr_tc_interval_s"].as<double>();
+  s.network.ns3.dsdv_periodic_update_interval_s =
+      ns3["dsdv_periodic_update_interval_s"].as<double>();
+  s.network.ns3.dsdv_settling_time_s = ns3["dsdv_settling_time_s"].as<double>();
 
   const YAML::Node output = tree["output"];
   s.output.dir = output["dir"].as<std::string>();
@@ -243,6 +259,7 @@ Scenario load_text(const std::string& text, const std::string& origin,
   ScenarioChecker checker(problems, loader, base_dir);
   YAML::Node tree = checker.check_root(schema, root);
   check_consistency(tree, checker, problems);
+  check_network_engine(tree, checker, problems, loader);
   resolve_output_dir(tree, overrides, problems);
   if (!problems.empty()) throw ScenarioError(problems.lines());
 

@@ -227,6 +227,39 @@ const KeySpec& scenario_schema() {
       }),
       plugin_key("mac", PluginKind::mac, "Medium access control.").plugin_default("ideal_mac"),
       plugin_key("routing", PluginKind::routing, "Routing protocol.").need(),
+      choice_key("engine", {"native", "ns3"},
+                 "Which simulator is the network half: SwarmNet's own (native) or ns-3.37 "
+                 "(ns3: every key above mapped onto ns-3's models, docs/ns3-engine.md).")
+          .defaults("native"),
+      map_key("ns3", "ns-3 engine only: choices SwarmNet's own engine has no counterpart for.", {
+        choice_key("standard", {"80211a", "80211b", "80211g", "80211n", "80211ac"},
+                   "Wi-Fi standard (802.11n and ac in the 5 GHz band).").defaults("80211a"),
+        choice_key("rate_manager", {"constant", "arf", "aarf", "minstrel", "minstrel_ht",
+                                    "ideal"},
+                   "Rate adaptation: constant uses data_mode and control_mode; the others are "
+                   "ns-3's managers of those names.").defaults("constant"),
+        text_key("data_mode", "constant: ns-3 WifiMode of data frames (e.g. OfdmRate54Mbps, "
+                              "HtMcs7).").derived("the MAC's data_rate_bps (802.11a/b/g)"),
+        text_key("control_mode", "constant: ns-3 WifiMode of control frames.")
+            .derived("the MAC's control_rate_bps (802.11a/b/g)"),
+        choice_key("error_rate_model", {"nist", "table", "yans"},
+                   "Frame error rates from SINR: nist (what SwarmNet's sinr PHY implements), "
+                   "table (ns-3.37's default) or yans.").defaults("nist"),
+        choice_key("arp", {"dynamic", "static"},
+                   "dynamic: ns-3's ARP (requests, replies, a pending queue of 3); static: every "
+                   "neighbour's entry filled before the run, no ARP frame (the aligned setup of "
+                   "docs/validation.md).").defaults("dynamic"),
+        choice_key("ip_routing", {"none", "olsr", "dsdv"},
+                   "IP routing under network.routing `direct`: none (one hop), or ns-3's OLSR or "
+                   "DSDV finding multi-hop routes.").defaults("none"),
+        real_key("olsr_hello_interval_s", "s", "olsr: HELLO interval.").above(0).defaults("2"),
+        real_key("olsr_tc_interval_s", "s", "olsr: topology control interval.")
+            .above(0).defaults("5"),
+        real_key("dsdv_periodic_update_interval_s", "s", "dsdv: full table update interval.")
+            .above(0).defaults("15"),
+        real_key("dsdv_settling_time_s", "s", "dsdv: wait before advertising a changed route.")
+            .above(0).defaults("5"),
+      }),
     }),
     map_key("output", "What a run writes, and where.", {
       text_key("dir", "Run directory; relative to the current working directory. --out wins.")

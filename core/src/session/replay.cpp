@@ -2,12 +2,13 @@
 
 #include <chrono>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "coupling/cpu_clock.hpp"
-#include "network/network_simulator.hpp"
+#include "coupling/network_engine_choice.hpp"
 #include "outputs/atomic_file.hpp"
 #include "outputs/output_files.hpp"
 #include "outputs/positions_trace.hpp"
@@ -115,8 +116,13 @@ ReplayOutcome replay_network(const ReplayInputs& inputs, const std::filesystem::
   std::filesystem::remove(out_dir / kSummaryFile, ec);
 
   const double cpu_start = thread_cpu_seconds();
-  AtomicFile trace(out_dir / kPacketTraceFile);
-  NetworkSimulator simulator(scenario.network_settings(), loader, &trace.stream());
+  std::optional<AtomicFile> trace;
+  if (scenario.network.engine == NetworkEngineKind::native) {
+    trace.emplace(out_dir / kPacketTraceFile);
+  }
+  const std::unique_ptr<NetworkEngine> engine =
+      make_network_engine(scenario, loader, trace ? &trace->stream() : nullptr);
+  NetworkEngine& simulator = *engine;
   StepBatch batch;
   StepResult result;
   std::size_t next = 0;
@@ -147,7 +153,7 @@ ReplayOutcome replay_network(const ReplayInputs& inputs, const std::filesystem::
   }
   simulator.finish();
   const double network_cpu = thread_cpu_seconds() - cpu_start;
-  trace.commit();
+  if (trace) trace->commit();
 
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

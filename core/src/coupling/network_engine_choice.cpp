@@ -1,0 +1,17 @@
+#include "coupling/network_engine_choice.hpp"
+
+#include "network/network_simulator.hpp"
+#include "ns3_host/ns3_network_engine.hpp"
+
+namespace swarmnet {
+
+std::unique_ptr<NetworkEngine> make_network_engine(const Scenario& scenario, PluginLoader& loader,
+                                                   std::ostream* packet_trace) {
+  const NetworkSettings settings = scenario.network_settings();
+  if (settings.network.engine == NetworkEngineKind::ns3) {
+    return std::make_unique<Ns3NetworkEngine>(settings);
+  }
+  return std::make_unique<NetworkSimulator>(settings, loader, packet_trace);
+}
+
+}  // namespace swarmnet

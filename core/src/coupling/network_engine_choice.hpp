@@ -1,0 +1,21 @@
+// The network engine a scenario's `network.engine` names, for a run's network half and for a
+// replay alike.
+#pragma once
+
+#include <memory>
+#include <ostream>
+
+#include "network/network_engine.hpp"
+#include "plugin/plugin_loader.hpp"
+#include "scenario/scenario.hpp"
+
+namespace swarmnet {
+
+// SwarmNet's own simulator (writing `packet_trace` when not null), or ns-3 (which writes none:
+// the scenario check refuses output.packet_trace with it). Throws what the engine's set-up
+// throws.
+[[nodiscard]] std::unique_ptr<NetworkEngine> make_network_engine(const Scenario& scenario,
+                                                                 PluginLoader& loader,
+                                                                 std::ostream* packet_trace);
+
+}  // namespace swarmnet

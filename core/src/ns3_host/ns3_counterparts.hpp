@@ -1,0 +1,159 @@
+// What of a scenario the ns-3 engine can run, and as what: each plugin with an ns-3 counterpart
+// and, for each of its parameters, the ns-3 attribute it sets. The scenario check refuses any
+// other plugin, and any parameter given in the file that has no attribute here; the mapping
+// (ns3_settings.cpp) reads the same table, so the two cannot disagree.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace swarmnet {
+
+// How a parameter's value becomes the attribute's text.
+enum class Ns3Conversion : std::uint8_t {
+  number,       // as is (%.17g)
+  integer,      // as a whole number
+  boolean,      // true / false
+  seconds,      // an ns-3 Time in seconds ("0.5s")
+  db_to_ratio,  // dB to a linear ratio (friis' SystemLoss)
+  packets,      // a QueueSize in packets ("100p")
+  special,      // mapped by code in ns3_settings.cpp (rates, antenna heights, AODV's times
+                // whose 0 means "derived from the others", which ns-3 does not derive)
+};
+
+// Which ns-3 object an attribute is set on.
+enum class Ns3Target : std::uint8_t {
+  plugin_object,  // the counterpart's own object (a loss model, AODV's RoutingProtocol)
+  phy,            // YansWifiPhy
+  rate_manager,   // the WifiRemoteStationManager
+  txop,           // the ad hoc MAC's Txop
+  mac_queue,      // the Txop's WifiMacQueue
+  application,    // the module's own application (flooding)
+};
+
+struct Ns3ParamAttribute {
+  std::string_view param;
+  std::string_view attribute;  // empty for `special` and `application`
+  Ns3Conversion conversion;
+  Ns3Target target = Ns3Target::plugin_object;
+};
+
+struct Ns3Counterpart {
+  std::string_view plugin;
+  std::string_view type_id;  // the ns-3 object it becomes (empty: an application of the module)
+  std::span<const Ns3ParamAttribute> params;
+};
+
+namespace ns3_tables {
+using enum Ns3Conversion;
+inline constexpr std::array<Ns3ParamAttribute, 3> kLogDistance{{
+    {"exponent", "Exponent", number},
+    {"reference_distance_m", "ReferenceDistance", number},
+    {"reference_loss_db", "ReferenceLoss", number},
+}};
+inline constexpr std::array<Ns3ParamAttribute, 3> kFriis{{
+    {"frequency_hz", "Frequency", number},
+    {"system_loss_db", "SystemLoss", db_to_ratio},
+    {"min_loss_db", "MinLoss", number},
+}};
+inline constexpr std::array<Ns3ParamAttribute, 4> kTwoRayGround{{
+    {"frequency_hz", "Frequency", number},
+    {"system_loss_db", "SystemLoss", db_to_ratio},
+    {"tx_height_m", "HeightAboveZ", special},  // ns-3 has one height for both ends
+    {"rx_height_m", "HeightAboveZ", special},
+}};
+inline constexpr std::array<Ns3ParamAttribute, 1> kRange{{
+    {"max_range_m", "MaxRange", number},
+}};
+inline constexpr std::array<Ns3ParamAttribute, 5> kNakagami{{
+    {"distance1_m", "Distance1", number},
+    {"distance2_m", "Distance2", number},
+    {"m0", "m0", number},
+    {"m1", "m1", number},
+    {"m2", "m2", number},
+}};
+inline constexpr std::array<Ns3ParamAttribute, 11> kDcf80211{{
+    {"data_rate_bps", "DataMode", special, Ns3Target::rate_manager},
+    {"control_rate_bps", "ControlMode", special, Ns3Target::rate_manager},
+    {"slot_s", "Slot", seconds, Ns3Target::phy},
+    {"sifs_s", "Sifs", seconds, Ns3Target::phy},
+    {"cw_min", "MinCw", integer, Ns3Target::txop},
+    {"cw_max", "MaxCw", integer, Ns3Target::txop},
+    {"short_retry_limit", "MaxSsrc", integer, Ns3Target::rate_manager},
+    {"long_retry_limit", "MaxSlrc", integer, Ns3Target::rate_manager},
+    {"rts_threshold_bytes", "RtsCtsThreshold", integer, Ns3Target::rate_manager},
+    {"queue_limit", "MaxSize", packets, Ns3Target::mac_queue},
+    {"queue_max_delay_s", "MaxDelay", seconds, Ns3Target::mac_queue},
+}};
+inline constexpr std::array<Ns3ParamAttribute, 24> kAodv{{
+    {"hello_interval_s", "HelloInterval", seconds},
+    {"allowed_hello_loss", "AllowedHelloLoss", integer},
+    {"active_route_timeout_s", "ActiveRouteTimeout", seconds},
+    {"net_diameter", "NetDiameter", integer},
+    {"node_traversal_time_s", "NodeTraversalTime", seconds},
+    {"net_traversal_time_s", "NetTraversalTime", special},
+    {"path_discovery_time_s", "PathDiscoveryTime", special},
+    {"next_hop_wait_s", "NextHopWait", special},
+    {"my_route_timeout_s", "MyRouteTimeout", special},
+    {"blacklist_timeout_s", "BlackListTimeout", special},
+    {"delete_period_s", "DeletePeriod", special},
+    {"rreq_retries", "RreqRetries", integer},
+    {"rreq_rate_limit", "RreqRateLimit", integer},
+    {"rerr_rate_limit", "RerrRateLimit", integer},
+    {"ttl_start", "TtlStart", integer},
+    {"ttl_increment", "TtlIncrement", integer},
+    {"ttl_threshold", "TtlThreshold", integer},
+    {"timeout_buffer", "TimeoutBuffer", integer},
+    {"max_queue_len", "MaxQueueLen", integer},
+    {"max_queue_time_s", "MaxQueueTime", seconds},
+    {"destination_only", "DestinationOnly", boolean},
+    {"gratuitous_reply", "GratuitousReply", boolean},
+    {"enable_hello", "EnableHello", boolean},
+    {"enable_broadcast", "EnableBroadcast", boolean},
+}};
+inline constexpr std::array<Ns3ParamAttribute, 3> kFlooding{{
+    {"ttl", "", special, Ns3Target::application},
+    {"jitter_max_s", "", special, Ns3Target::application},
+    {"cache_size", "", special, Ns3Target::application},
+}};
+}  // namespace ns3_tables
+
+inline constexpr std::array<Ns3Counterpart, 5> kNs3Propagation{{
+    {"log_distance", "ns3::LogDistancePropagationLossModel", ns3_tables::kLogDistance},
+    {"friis", "ns3::FriisPropagationLossModel", ns3_tables::kFriis},
+    {"two_ray_ground", "ns3::TwoRayGroundPropagationLossModel", ns3_tables::kTwoRayGround},
+    {"range", "ns3::RangePropagationLossModel", ns3_tables::kRange},
+    {"nakagami", "ns3::NakagamiPropagationLossModel", ns3_tables::kNakagami},
+}};
+
+// The MAC: its parameters land on the rate manager, the PHY, the Txop and the queue.
+inline constexpr std::array<Ns3Counterpart, 1> kNs3Mac{{
+    {"dcf80211", "ns3::AdhocWifiMac", ns3_tables::kDcf80211},
+}};
+
+inline constexpr std::array<Ns3Counterpart, 3> kNs3Routing{{
+    {"direct", "", {}},
+    {"flooding", "", ns3_tables::kFlooding},
+    {"aodv", "ns3::aodv::RoutingProtocol", ns3_tables::kAodv},
+}};
+
+// The counterpart of plugin `name` in `table`, or null.
+inline const Ns3Counterpart* find_ns3_counterpart(std::span<const Ns3Counterpart> table,
+                                                  std::string_view name) {
+  for (const auto& entry : table) {
+    if (entry.plugin == name) return &entry;
+  }
+  return nullptr;
+}
+
+inline const Ns3ParamAttribute* find_ns3_attribute(const Ns3Counterpart& counterpart,
+                                                   std::string_view param) {
+  for (const auto& row : counterpart.params) {
+    if (row.param == param) return &row;
+  }
+  return nullptr;
+}
+
+}  // namespace swarmnet

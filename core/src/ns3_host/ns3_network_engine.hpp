@@ -1,0 +1,59 @@
+// The network half with ns-3.37 as its engine (`network.engine: ns3`, docs/ns3-engine.md): the
+// step protocol's batches go to an ns-3 network in the engine module, its arrivals come back as
+// deliveries. What the robots see is decided here, as SwarmNet's own engine decides it: messages
+// taken in at the same instants (injection_offset), each delivered once per receiver (later
+// copies counted as duplicates), and the same metrics (network/network_metrics.hpp) computed
+// from the same events.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "network/network_engine.hpp"
+#include "network/network_metrics.hpp"
+#include "network/network_settings.hpp"
+#include "ns3_engine/ns3_engine_api.hpp"
+
+namespace swarmnet {
+
+class Ns3NetworkEngine final : public NetworkEngine {
+ public:
+  // Loads the module and sets ns-3 up; throws std::runtime_error (module) or
+  // std::invalid_argument (settings) saying why not.
+  explicit Ns3NetworkEngine(const NetworkSettings& settings);
+
+  void run_step(const StepBatch& batch, StepResult& result) override;
+  [[nodiscard]] NetworkReport report() const override;
+  void finish() override {}
+
+ private:
+  // What a delivery repeats of its message.
+  struct SentMessage {
+    RobotId source = kNoNode;
+    RobotId destination = kBroadcast;
+    std::uint16_t port = 0;
+    SimTime sent_at{};
+    Payload payload;
+  };
+
+  void check_batch(const StepBatch& batch) const;
+  void deliver(const ns3engine::Arrival& arrival, StepResult& result);
+
+  std::uint64_t seed_;
+  SimTime step_;
+  std::uint32_t nodes_;
+  SimTime next_start_{};
+  std::unique_ptr<ns3engine::Network> network_;
+  NetworkMetrics metrics_;
+  std::map<std::uint64_t, SentMessage> messages_;          // by message id
+  std::set<std::pair<std::uint64_t, RobotId>> delivered_;  // (message, receiver)
+  // Buffers reused across steps.
+  std::vector<double> xy_;
+  std::vector<ns3engine::Message> window_messages_;
+  std::vector<ns3engine::Arrival> arrivals_;
+};
+
+}  // namespace swarmnet
