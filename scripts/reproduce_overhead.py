@@ -12,6 +12,9 @@ seconds of the evaluation scenario (802.11 DCF, AODV, 20% CBR at 5 packets/s):
   ns3  configs/paper/evaluation.yaml: 802.11a at 6 Mbit/s, 120 m range (Table II, ARGoS/ns-3)
   ns2  configs/paper/evaluation-ns2.yaml: ns-2.35's defaults, two-ray ground, 250 m range,
        550 m carrier sense, RTS/CTS (Table I, ARGoS/ns-2)
+--engine ns3 runs the integrated and the network-alone runs with ns-3.37 as the network half
+(network.engine: ns3, docs/ns3-engine.md): the study's own kind of system, SwarmNet's robot half
+with ns-3, beside the study's ARGoS + ns-3.
 With --ns2-robots, ns-2.35 itself also runs alone on the integrated run's motion and traffic at
 those sizes (scripts/ns2_standalone.py; needs Debian's ns2): the study's standalone ns-2 on this
 machine.
@@ -20,6 +23,8 @@ Writes OUT/results.json and OUT/table.md.
   python3 scripts/reproduce_overhead.py --build build --out runs/paper-overhead
   python3 scripts/reproduce_overhead.py --build build --config ns2 --out runs/paper-overhead-ns2 \
       --ns2-robots 25,50,75,100
+  python3 scripts/reproduce_overhead.py --build build --engine ns3 --robots 200 \
+      --out runs/paper-overhead-ns3-engine
 """
 import argparse
 import json
@@ -68,6 +73,8 @@ def main():
     parser.add_argument("--duration-s", type=float, default=200.0)
     parser.add_argument("--config", choices=sorted(CONFIGS), default="ns3",
                         help="network configuration and the study's table to compare with")
+    parser.add_argument("--engine", choices=["native", "ns3"], default="native",
+                        help="the network half of the integrated and network-alone runs")
     parser.add_argument("--ns2-robots", default="",
                         help="sizes at which to run ns-2.35 alone too (--config ns2 only)")
     parser.add_argument("--ns2-cpu-limit-s", default="0",
@@ -89,11 +96,12 @@ def main():
                   "--set", f"arena.height_m={side}", "--set", f"duration_s={args.duration_s}",
                   "--quiet"]
         integrated, alone, replay = out / f"integrated-{n}", out / f"robot-alone-{n}", out / f"replay-{n}"
-        swarmnet(binary, "run", str(scenario), *common, "--out", str(integrated), "--overwrite")
+        swarmnet(binary, "run", str(scenario), *common, "--set", f"network.engine={args.engine}",
+                 "--out", str(integrated), "--overwrite")
         swarmnet(binary, "run", str(scenario), *common, *ONE_HOP, "--out", str(alone), "--overwrite")
         swarmnet(binary, "replay", str(integrated), "--out", str(replay), "--quiet")
         i, a, r = summary(integrated), summary(alone), summary(replay)
-        rows.append({"config": args.config, "robots": n, "arena_m": side, "integrated": i["cpu_s"],
+        rows.append({"config": args.config, "engine": args.engine, "robots": n, "arena_m": side, "integrated": i["cpu_s"],
                      "wall_s": i["wall_s"], "realtime_factor": i["realtime_factor"],
                      "pdr": i["pdr"], "robot_alone_cpu_s": a["cpu_s"]["robot"],
                      "network_alone_cpu_s": r["cpu_s"]["network"]})
@@ -106,7 +114,7 @@ def main():
             rows[-1]["ns2_standalone"] = json.loads(ns2.stdout)
         print(f"{n} robots done", file=sys.stderr)
         # Written after every size, so that a long sweep stopped part way keeps what it measured.
-        write_outputs(out, rows, simulator, study_table, bool(ns2_sizes))
+        write_outputs(out, rows, simulator, study_table, bool(ns2_sizes), args.engine)
     print((out / "table.md").read_text(), end="")
 
 
@@ -118,9 +126,10 @@ def ns2_cell(ns2):
     return f" {ns2['cpu_s']:.2f} ({ns2['pdr']:.3f}) |"
 
 
-def write_outputs(out, rows, simulator, study_table, with_ns2):
+def write_outputs(out, rows, simulator, study_table, with_ns2, engine):
     (out / "results.json").write_text(json.dumps(rows, indent=2) + "\n")
-    lines = [f"| robots | arena (m) | study: ARGoS + {simulator} = sum | SwarmNet integrated: robot + "
+    ours = "SwarmNet integrated" if engine == "native" else "SwarmNet + ns-3 engine"
+    lines = [f"| robots | arena (m) | study: ARGoS + {simulator} = sum | {ours}: robot + "
              f"network + transport = sum | study standalone: ARGoS / {simulator} | SwarmNet "
              "standalone: robot half (disk) / network half (replay) | SwarmNet wall s (real-time "
              "factor) | delivery ratio |" + (" ns-2.35 alone here: CPU s (delivery ratio) |"

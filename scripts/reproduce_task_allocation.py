@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""The reference study's task allocation (section VI, Fig. 5) under five communication models.
+"""The reference study's task allocation (section VI, Fig. 5) under six communication models.
 
 Runs the sweep configs/sweeps/task-allocation.yaml (20, 30 and 40 robots x 5, 10, 15 and 20 events
-x the models all, p50, p75, p100 and 80211a x 25 seeds = 1500 runs) with `swarmnet sweep`, which is
+x the models all, p50, p75, p100, 80211a and ns3 x 25 seeds = 1800 runs) with `swarmnet sweep`, which is
 resumable (run it again after an interruption: finished runs are skipped), then writes into the
 output folder (default: the sweep's directory):
   completion.png   the study's Fig. 5: one panel per robot count (20, 30, 40, top to bottom), mean
@@ -41,7 +41,7 @@ from collections import defaultdict
 
 from figure_python import require_matplotlib
 
-MODELS = ["all", "p50", "p75", "p100", "80211a"]    # the sweep's order; others are appended
+MODELS = ["all", "p50", "p75", "p100", "80211a", "ns3"]  # the sweep's order; others appended
 MESSAGE_TYPES = ["S", "G", "C", "H", "A"]           # the study's five messages; others appended
 ALPHA = 0.1                                         # the study's "p-values less than 0.1"
 CONFIDENCE = 0.95

@@ -4,14 +4,21 @@
 For each swarm size at the study's constant density (500 x 500 m for 50 robots) and each seed,
 the reference study's scenario (configs/paper/evaluation.yaml: 802.11a DCF at 6 Mbit/s, SINR
 reception with a 120 m range, AODV, 20% of the robots sending 512-byte messages 5 times a
-second) runs, interleaved, three ways:
-  native   `swarmnet run` with network.engine: native (the default)
-  ns3      `swarmnet run` with network.engine: ns3: the same robot half, ns-3.37 as network half
-  replay   swarmnet_ns3_replay, ns-3 alone, on the ns3 run's own mobility and traffic, with the
-           same stack as the engine (ns-3's ARP, not pre-filled): what the coupling adds is the
-           ns3 run's network-half CPU (ns-3 plus the step protocol's transport) over this one
-Writes OUT/results.json (every run's measures) and OUT/table.md (two tables: native against
-ns3 pooled over the seeds, and the coupling overhead).
+second) runs, interleaved:
+  native      `swarmnet run` with network.engine: native (the default)
+  ns3-static  `swarmnet run` with network.engine: ns3 and network.ns3.arp: static: ns-3.37 as the
+              network half, with the models corresponding to SwarmNet's (no ARP frames, as
+              SwarmNet's own engine has no ARP)
+  ns3         the same with ns-3's ARP (network.ns3.arp: dynamic, the default): ns-3 as its
+              users run it
+and, on the ns3 run's own recorded motion and messages, ns-3 alone twice:
+  replay       swarmnet_ns3_replay (an independent ns-3 program: ns-2 mobility, the same stack,
+               ARP not pre-filled)
+  engine-alone `swarmnet replay`: the ns-3 engine without the robot half and the transport
+What the coupling adds is the ns3 run's network-half CPU (ns-3, the adapter and the step
+protocol's transport) over each of them.
+Writes OUT/results.json (every run's measures) and OUT/table.md (two tables: the engines pooled
+over the seeds, and the coupling overhead).
 
   python3 bench/ns3_engine/run_ns3_engine_bench.py --build build --out runs/bench-ns3-engine
 """
@@ -23,6 +30,9 @@ import subprocess
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent.parent
+VARIANTS = {"native": ["--set", "network.engine=native"],
+            "ns3_static": ["--set", "network.engine=ns3", "--set", "network.ns3.arp=static"],
+            "ns3": ["--set", "network.engine=ns3"]}
 
 
 def run(command):
@@ -66,19 +76,22 @@ def main():
                       "--set", f"arena.height_m={side}", "--set", f"duration_s={args.duration_s}",
                       "--quiet", "--overwrite"]
             row = {"robots": n, "arena_m": side, "seed": seed}
-            for engine in ("native", "ns3"):
-                run_dir = out / f"{engine}-{n}-seed{seed}"
-                run([binary, "run", scenario, *common, "--set", f"network.engine={engine}",
-                     "--out", run_dir])
+            for variant, settings in VARIANTS.items():
+                run_dir = out / f"{variant}-{n}-seed{seed}"
+                run([binary, "run", scenario, *common, *settings, "--out", run_dir])
                 summary = json.loads((run_dir / "summary.json").read_text())
                 cpu = summary["cpu_s"]
-                row[engine] = {**measures(summary), "cpu_s": cpu,
+                row[variant] = {**measures(summary), "cpu_s": cpu,
                                "network_cpu_per_sim_s": cpu["network"] / summary["sim_time_s"],
                                "realtime_factor": summary["realtime_factor"]}
             ns3_dir = out / f"ns3-{n}-seed{seed}"
             alone = json.loads(run([replay, ns3_dir, "--routing", "aodv", "--seed", seed,
                                     "--arp-entries", "none"]))
             row["ns3_alone"] = {"cpu_s": alone["cpu_s"]["network"], "pdr": alone["pdr"]}
+            engine_alone = out / f"engine-alone-{n}-seed{seed}"
+            run([binary, "replay", ns3_dir, "--out", engine_alone, "--quiet"])
+            summary = json.loads((engine_alone / "summary.json").read_text())
+            row["engine_alone"] = {"cpu_s": summary["cpu_s"]["network"], "pdr": summary["pdr"]}
             rows.append(row)
             print(f"{n} robots, seed {seed} done", file=sys.stderr)
             write_outputs(out, rows)  # after every run, so that a stopped sweep keeps its rows
@@ -97,34 +110,36 @@ def fmt(value, spec):
 def write_outputs(out, rows):
     (out / "results.json").write_text(json.dumps(rows, indent=2) + "\n")
     sizes = sorted({r["robots"] for r in rows})
-    lines = ["| robots | seeds | delivery native / ns3 | mean delay ms native / ns3 | control "
-             "packets per delivery native / ns3 | network CPU s per simulated s native / ns3 | "
-             "real-time factor native / ns3 |", "|---|---|---|---|---|---|---|"]
+    names = {"native": "native", "ns3_static": "ns-3, static ARP", "ns3": "ns-3, ARP"}
+    lines = ["| robots | runs | engine | delivery | mean delay ms | control packets per delivery | "
+             "MAC frames | network CPU s per simulated s | real-time factor |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for n in sizes:
         group = [r for r in rows if r["robots"] == n]
-        pdr = {e: sum(r[e]["delivered"] for r in group) / max(1, sum(r[e]["unicast_sent"]
-                                                                   for r in group))
-               for e in ("native", "ns3")}
-        delay = {e: pooled(group, e, "delay_mean_s") for e in ("native", "ns3")}
-        cpd = {e: pooled(group, e, "control_per_delivery") for e in ("native", "ns3")}
-        cpu = {e: pooled(group, e, "network_cpu_per_sim_s") for e in ("native", "ns3")}
-        rtf = {e: pooled(group, e, "realtime_factor") for e in ("native", "ns3")}
-        lines.append(
-            f"| {n} | {len(group)} | {pdr['native']:.3f} / {pdr['ns3']:.3f} "
-            f"({100 * (pdr['ns3'] - pdr['native']):+.1f} points) | "
-            f"{fmt(delay['native'] and delay['native'] * 1e3, '.1f')} / "
-            f"{fmt(delay['ns3'] and delay['ns3'] * 1e3, '.1f')} | {fmt(cpd['native'], '.2f')} / "
-            f"{fmt(cpd['ns3'], '.2f')} | {cpu['native']:.3f} / {cpu['ns3']:.3f} | "
-            f"{rtf['native']:.1f}x / {rtf['ns3']:.1f}x |")
-    lines += ["", "| robots | seed | ns3 engine: ns-3 + transport CPU s | ns-3 alone "
-              "(swarmnet_ns3_replay) CPU s | coupling adds | delivery engine / alone |",
+        for variant in VARIANTS:
+            delivered = sum(r[variant]["delivered"] for r in group)
+            pdr = delivered / max(1, sum(r[variant]["unicast_sent"] for r in group))
+            delta = "" if variant == "native" else (
+                f" ({100 * (pdr - sum(r['native']['delivered'] for r in group) / max(1, sum(r['native']['unicast_sent'] for r in group))):+.1f})")
+            delay = pooled(group, variant, "delay_mean_s")
+            control = sum(r[variant]["control_packets"] for r in group)
+            frames = sum(r[variant]["mac_tx_frames"] for r in group) / len(group)
+            lines.append(
+                f"| {n} | {len(group)} | {names[variant]} | {pdr:.3f}{delta} | "
+                f"{fmt(delay and delay * 1e3, '.1f')} | {fmt(control / delivered if delivered else None, '.2f')} | "
+                f"{frames:.0f} | {pooled(group, variant, 'network_cpu_per_sim_s'):.3f} | "
+                f"{pooled(group, variant, 'realtime_factor'):.1f}x |")
+    lines += ["", "| robots | seed | ns-3 engine in the run: ns-3 + transport CPU s | "
+              "swarmnet_ns3_replay CPU s (coupling adds) | swarmnet replay, engine alone CPU s "
+              "(coupling adds) | delivery: run / replay / engine alone |",
               "|---|---|---|---|---|---|"]
     for r in rows:
         engine_cpu = r["ns3"]["cpu_s"]["network"] + r["ns3"]["cpu_s"]["transport"]
-        alone = r["ns3_alone"]["cpu_s"]
-        lines.append(f"| {r['robots']} | {r['seed']} | {engine_cpu:.2f} | {alone:.2f} | "
-                     f"{100 * (engine_cpu / alone - 1):+.1f}% | {r['ns3']['pdr']:.3f} / "
-                     f"{r['ns3_alone']['pdr']:.3f} |")
+        alone, engine_alone = r["ns3_alone"]["cpu_s"], r["engine_alone"]["cpu_s"]
+        lines.append(f"| {r['robots']} | {r['seed']} | {engine_cpu:.2f} | {alone:.2f} "
+                     f"({100 * (engine_cpu / alone - 1):+.1f}%) | {engine_alone:.2f} "
+                     f"({100 * (engine_cpu / engine_alone - 1):+.1f}%) | {r['ns3']['pdr']:.3f} / "
+                     f"{r['ns3_alone']['pdr']:.3f} / {r['engine_alone']['pdr']:.3f} |")
     (out / "table.md").write_text("\n".join(lines) + "\n")
 
 

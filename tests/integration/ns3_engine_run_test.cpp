@@ -81,7 +81,7 @@ TEST(Ns3Engine, StaticArpSendsNoArpFrameAndDynamicArpDoes) {
   EXPECT_GT(aligned["packets"]["delivered"].get<int>(), 0);
 }
 
-TEST(Ns3Engine, EveryErrorRateModelAndAnotherStandardRun) {
+TEST(Ns3Engine, OtherErrorModelsStandardsManagersAndTheAlignedSetupRun) {
   for (const char* extra :
        {" --set network.ns3.error_rate_model=table", " --set network.ns3.error_rate_model=yans",
         " --set network.ns3.standard=80211n --set network.ns3.data_mode=HtMcs3"
@@ -156,7 +156,10 @@ TEST(Ns3Engine, WhatNs3CannotRunIsRefusedBeforeTheRunWithWhereAndWhy) {
       {"network.channel.cutoff=false", "--set network.channel.cutoff", "has no ns-3 counterpart"},
       {"network.routing.params.link_layer_feedback=false",
        "--set network.routing.params.link_layer_feedback",
-       "'aodv' parameter link_layer_feedback has no ns-3 counterpart"},
+       "ns-3's AODV takes layer-2 feedback whenever ARP resolved the neighbour"},
+      {"network.routing.params.enable_local_repair=true",
+       "--set network.routing.params.enable_local_repair",
+       "'aodv' parameter enable_local_repair has no ns-3 counterpart"},
       {"network.mac.params.header_bytes=40", "--set network.mac.params.header_bytes",
        "'dcf80211' parameter header_bytes has no ns-3 counterpart"},
       {"network.mac.params.data_rate_bps=7e6", "--set network.mac.params.data_rate_bps",

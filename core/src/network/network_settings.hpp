@@ -48,7 +48,7 @@ struct Ns3Options {
   std::string control_mode;  // constant: WifiMode of control frames; empty: from the MAC's rate
   std::string ip_routing = "none";        // under the `direct` plugin: none (one hop), olsr, dsdv
   std::string error_rate_model = "nist";  // nist (SwarmNet's sinr model), table, yans
-  std::string arp = "dynamic";            // dynamic (ns-3's ARP) or static (entries pre-filled)
+  std::string arp = "dynamic";  // dynamic (ns-3's ARP) or static (entries filled before the run)
   double olsr_hello_interval_s = 2.0;
   double olsr_tc_interval_s = 5.0;
   double dsdv_periodic_update_interval_s = 15.0;

@@ -18,7 +18,7 @@
 namespace swarmnet::ns3engine {
 
 // Bumped whenever anything in this header changes; the kernel refuses a module of another one.
-inline constexpr std::uint32_t kApiVersion = 2;
+inline constexpr std::uint32_t kApiVersion = 3;
 
 inline constexpr std::uint32_t kBroadcastNode = 0xFFFFFFFFU;
 
@@ -40,6 +40,18 @@ enum class Routing : std::uint8_t {
   aodv,      // ns-3's AodvHelper
   olsr,      // ns-3's OlsrHelper
   dsdv,      // ns-3's DsdvHelper
+};
+
+// How nodes learn their neighbours' MAC addresses.
+enum class Arp : std::uint8_t {
+  dynamic,  // ns-3's ARP: requests, replies, a pending queue (ns-3 as its users run it)
+  // Every neighbour's entry filled in before the run (NeighborCacheHelper), so no ARP frame is
+  // sent. ns-3.37's AODV maps a MAC address back to a neighbour only through an entry that is
+  // alive or permanent: `static_no_feedback` leaves the entries auto-generated, so AODV gets no
+  // layer-2 feedback (the aligned setup of docs/validation.md); `static_with_feedback` marks them
+  // permanent, which gives it back and changes nothing else.
+  static_no_feedback,
+  static_with_feedback,
 };
 
 struct FloodingParams {
@@ -65,9 +77,7 @@ struct Config {
   Routing routing = Routing::direct;
   std::vector<Attribute> routing_attributes;  // on the aodv, olsr or dsdv RoutingProtocol
   FloodingParams flooding;
-  // ARP entries for every neighbour filled in before the run (ns-3's NeighborCacheHelper), so no
-  // ARP frame is sent: the aligned configuration of docs/validation.md. False: ns-3's ARP.
-  bool static_arp = false;
+  Arp arp = Arp::dynamic;
 };
 
 // A robot's message, taken in by the network at `inject_ns` (inside the window it comes with).

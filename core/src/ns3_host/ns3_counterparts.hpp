@@ -87,7 +87,7 @@ inline constexpr std::array<Ns3ParamAttribute, 11> kDcf80211{{
     {"queue_limit", "MaxSize", packets, Ns3Target::mac_queue},
     {"queue_max_delay_s", "MaxDelay", seconds, Ns3Target::mac_queue},
 }};
-inline constexpr std::array<Ns3ParamAttribute, 24> kAodv{{
+inline constexpr std::array<Ns3ParamAttribute, 25> kAodv{{
     {"hello_interval_s", "HelloInterval", seconds},
     {"allowed_hello_loss", "AllowedHelloLoss", integer},
     {"active_route_timeout_s", "ActiveRouteTimeout", seconds},
@@ -112,6 +112,7 @@ inline constexpr std::array<Ns3ParamAttribute, 24> kAodv{{
     {"gratuitous_reply", "GratuitousReply", boolean},
     {"enable_hello", "EnableHello", boolean},
     {"enable_broadcast", "EnableBroadcast", boolean},
+    {"link_layer_feedback", "", special},  // with network.ns3.arp (ns3_settings.cpp)
 }};
 inline constexpr std::array<Ns3ParamAttribute, 3> kFlooding{{
     {"ttl", "", special, Ns3Target::application},

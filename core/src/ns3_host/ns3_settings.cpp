@@ -98,6 +98,22 @@ const char* error_rate_model_type(const std::string& name) {
   throw std::invalid_argument("network.ns3.error_rate_model '" + name + "' is not known");
 }
 
+// ns-3's AODV has layer-2 feedback whenever it can map a MAC address to a neighbour: always with
+// ARP, and with entries filled in before the run only when they are permanent.
+ns3engine::Arp arp_mode(const NetworkSettings& settings) {
+  const PluginChoice& routing = settings.network.routing;
+  const bool feedback = routing.name == "aodv" && routing.params.boolean("link_layer_feedback");
+  if (settings.network.ns3.arp == "dynamic") {
+    if (routing.name == "aodv" && !feedback) {
+      throw std::invalid_argument(
+          "aodv link_layer_feedback: false needs network.ns3.arp: static (ns-3's AODV takes "
+          "layer-2 feedback whenever ARP resolved the neighbour)");
+    }
+    return ns3engine::Arp::dynamic;
+  }
+  return feedback ? ns3engine::Arp::static_with_feedback : ns3engine::Arp::static_no_feedback;
+}
+
 const char* rate_manager_type(const std::string& name) {
   if (name == "constant") return "ns3::ConstantRateWifiManager";
   if (name == "arf") return "ns3::ArfWifiManager";
@@ -259,7 +275,7 @@ ns3engine::Config ns3_config_for(const NetworkSettings& settings) {
   }
   map_phy(settings.network.phy, config);
   config.error_rate_model.type_id = error_rate_model_type(settings.network.ns3.error_rate_model);
-  config.static_arp = settings.network.ns3.arp == "static";
+  config.arp = arp_mode(settings);
   map_mac(settings, config);
   map_routing(settings, config);
   return config;

@@ -218,6 +218,14 @@ void check_standard(KeyFacts& keys) {
 void check_routing(KeyFacts& keys) {
   const KeyPath routing({"network", "routing"});
   const Ns3Counterpart* counterpart = check_plugin(keys, routing, kNs3Routing, "routing");
+  const KeyPath feedback = routing / "params" / "link_layer_feedback";
+  if (counterpart != nullptr && counterpart->plugin == "aodv" && keys.text(feedback) == "false" &&
+      keys.text(KeyPath({"network", "ns3", "arp"})) != "static") {
+    keys.refuse(feedback,
+                "ns-3's AODV takes layer-2 feedback whenever ARP resolved the neighbour; without "
+                "it needs the neighbours' entries filled in before the run",
+                "network.ns3.arp: static with link_layer_feedback: false");
+  }
   const KeyPath ip_routing({"network", "ns3", "ip_routing"});
   const std::string ip = keys.text(ip_routing);
   if (counterpart != nullptr && ip != "none" && counterpart->plugin != "direct") {
