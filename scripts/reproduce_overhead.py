@@ -96,8 +96,12 @@ def main():
                   "--set", f"arena.height_m={side}", "--set", f"duration_s={args.duration_s}",
                   "--quiet"]
         integrated, alone, replay = out / f"integrated-{n}", out / f"robot-alone-{n}", out / f"replay-{n}"
-        swarmnet(binary, "run", str(scenario), *common, "--set", f"network.engine={args.engine}",
-                 "--out", str(integrated), "--overwrite")
+        # ns-3.37's AODV does not increment a broken route's sequence number: say so.
+        engine = ["--set", "network.engine=ns3", "--set",
+                  "network.routing.params.increment_seqno_on_break=false"
+                  ] if args.engine == "ns3" else []
+        swarmnet(binary, "run", str(scenario), *common, *engine, "--out", str(integrated),
+                 "--overwrite")
         swarmnet(binary, "run", str(scenario), *common, *ONE_HOP, "--out", str(alone), "--overwrite")
         swarmnet(binary, "replay", str(integrated), "--out", str(replay), "--quiet")
         i, a, r = summary(integrated), summary(alone), summary(replay)

@@ -51,8 +51,8 @@ TEST(Ns3Engine, AodvDeliversAndTheSummarySaysWhichEngineRan) {
 TEST(Ns3Engine, DirectAndFloodingDeliver) {
   for (const char* routing : {"direct", "flooding"}) {
     TempDir dir;
-    const auto summary =
-        run_summary(dir.path() / "run", std::string(" --set network.routing.plugin=") + routing);
+    const auto summary = run_summary(
+        dir.path() / "run", std::string(" --set 'network.routing={plugin: ") + routing + "}'");
     ASSERT_FALSE(summary.empty()) << routing;
     EXPECT_GT(summary["packets"]["delivered"].get<int>(), 0) << routing;
   }
@@ -62,7 +62,7 @@ TEST(Ns3Engine, OlsrAndDsdvRouteUnderDirect) {
   for (const char* ip : {"olsr", "dsdv"}) {
     TempDir dir;
     const auto summary =
-        run_summary(dir.path() / "run", std::string(" --set network.routing.plugin=direct") +
+        run_summary(dir.path() / "run", std::string(" --set 'network.routing={plugin: direct}'") +
                                             " --set network.ns3.ip_routing=" + ip);
     ASSERT_FALSE(summary.empty()) << ip;
     EXPECT_GT(summary["packets"]["delivered"].get<int>(), 0) << ip;
@@ -159,15 +159,20 @@ TEST(Ns3Engine, WhatNs3CannotRunIsRefusedBeforeTheRunWithWhereAndWhy) {
        "ns-3's AODV takes layer-2 feedback whenever ARP resolved the neighbour"},
       {"network.routing.params.enable_local_repair=true",
        "--set network.routing.params.enable_local_repair",
-       "'aodv' parameter enable_local_repair has no ns-3 counterpart"},
+       "'aodv' parameter enable_local_repair is true, but ns-3.37's AODV has no local repair"},
+      {"network.routing.params.increment_seqno_on_break=true",
+       "--set network.routing.params.increment_seqno_on_break",
+       "expected increment_seqno_on_break: false in network.routing.params"},
       {"network.mac.params.header_bytes=40", "--set network.mac.params.header_bytes",
-       "'dcf80211' parameter header_bytes has no ns-3 counterpart"},
+       "'dcf80211' parameter header_bytes is 40, but ns-3 sends real headers"},
       {"network.mac.params.data_rate_bps=7e6", "--set network.mac.params.data_rate_bps",
        "802.11a has no constant mode of 7000000 bit/s"},
       {"network.ns3.standard=80211n", "--set network.ns3.standard",
        "802.11n has no constant mode of 6000000 bit/s"},
       {"network.ns3.data_mode=HtMcs7", "--set network.ns3.data_mode",
        "'HtMcs7' is no WifiMode of 802.11a"},
+      {"network.ns3.rate_manager=minstrel --set network.ns3.data_mode=OfdmRate54Mbps",
+       "--set network.ns3.data_mode", "applies only to the constant rate manager"},
       {"network.ns3.ip_routing=olsr", "--set network.ns3.ip_routing",
        "only the `direct` plugin sends"},
       {"output.packet_trace=true", "--set output.packet_trace",
@@ -189,6 +194,15 @@ TEST(Ns3Engine, WhatNs3CannotRunIsRefusedBeforeTheRunWithWhereAndWhy) {
     EXPECT_NE(result.output.find(refusal.message), std::string::npos) << refusal.set << ":\n"
                                                                       << result.output;
   }
+  // A plugin's default that is not what ns-3 does is refused too, pointing at the engine.
+  const auto paper = run_swarmnet("validate " + std::string(SWARMNET_SOURCE_DIR) +
+                                  "/configs/paper/evaluation.yaml --set network.engine=ns3");
+  EXPECT_NE(paper.exit_code, 0);
+  EXPECT_NE(paper.output.find("--set network.engine: network.engine: 'aodv' parameter "
+                              "increment_seqno_on_break is true (its default), but ns-3.37's "
+                              "AODV does not increment"),
+            std::string::npos)
+      << paper.output;
   // In the file itself, the refusal names the file, line and column.
   TempDir dir;
   const auto scenario = dir.path() / "ideal.yaml";

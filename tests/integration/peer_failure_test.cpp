@@ -122,11 +122,26 @@ void expect_nothing_left(const TempDir& dir, pid_t run) {
   }
 }
 
-void expect_killed_network_half_reported(const std::string& scenario) {
+// True once process `pid` has `library` mapped (within 20 s).
+bool wait_mapped(pid_t pid, const std::string& library) {
+  const auto deadline = Clock::now() + std::chrono::seconds(20);
+  while (Clock::now() < deadline) {
+    if (read_file("/proc/" + std::to_string(pid) + "/maps").find(library) != std::string::npos) {
+      return true;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return false;
+}
+
+// `engine_library`: a library the network half must have loaded before it is killed.
+void expect_killed_network_half_reported(const std::string& scenario,
+                                         const std::string& engine_library = "") {
   TempDir dir;
   BackgroundRun run(dir, {}, scenario);
   const pid_t network = run.network_half();
   ASSERT_GT(network, 0) << run.output();
+  if (!engine_library.empty()) ASSERT_TRUE(wait_mapped(network, engine_library));
   ASSERT_EQ(::kill(network, SIGKILL), 0);
   const int status = run.wait_exit(kStopBound);
   ASSERT_NE(status, -1) << "the robot half did not stop";
@@ -146,7 +161,7 @@ TEST(PeerFailure, KilledNetworkHalfEndsTheRunWithItsCause) {
 #ifdef SWARMNET_HAVE_NS3
 // The ns-3 engine's half is the same `swarmnet net` process with ns-3 loaded in it.
 TEST(PeerFailure, KilledNs3NetworkHalfEndsTheRunWithItsCause) {
-  expect_killed_network_half_reported("ns3.yaml");
+  expect_killed_network_half_reported("ns3.yaml", "libswarmnet_ns3_engine.so");
 }
 #endif
 

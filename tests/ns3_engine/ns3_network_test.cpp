@@ -168,13 +168,15 @@ TEST(Ns3Network, NothingArrivesOutOfRange) {
   const Report sent = network.report();
   EXPECT_EQ(count(sent.mac, "tx_frames"), 2U);  // the broadcast, the first ARP request
   EXPECT_EQ(count(sent.mac, "arp_requests"), 1U);
-  // ARP asks three more times, a second apart, then drops the message waiting for it.
+  // ARP asks three more times, a second apart, then drops the message waiting for it: the link
+  // failed, counted as a MAC's retry limit.
   EXPECT_TRUE(run(network, 6 * kS, far).empty());
   const Report dropped = network.report();
   EXPECT_EQ(count(dropped.mac, "arp_requests"), 4U);
   EXPECT_EQ(count(dropped.mac, "arp_replies"), 0U);
   EXPECT_EQ(count(dropped.mac, "arp_drops"), 1U);
-  EXPECT_EQ(count(dropped.drops, "queue_full"), 1U);
+  EXPECT_EQ(count(dropped.drops, "retry_limit"), 1U);
+  EXPECT_EQ(count(dropped.drops, "queue_full"), 0U);
 }
 
 TEST(Ns3Network, AodvCrossesALineInTwoHops) {

@@ -79,11 +79,10 @@ void DatagramEndpoint::receive(ns3::Ptr<ns3::Socket> socket) {
   while (const ns3::Ptr<ns3::Packet> packet = socket->Recv()) {
     MessageTag tag;
     if (!find_message(packet, tag)) continue;
-    std::uint32_t hops = 1;  // a broadcast is never forwarded
+    // Every IP forwarding decrements the TTL, a broadcast's too (AODV and DSDV relay broadcasts).
+    std::uint32_t hops = 1;
     ns3::SocketIpTtlTag ttl;
-    if (tag.destination() != kBroadcastNode && packet->RemovePacketTag(ttl)) {
-      hops = kDefaultTtl + 1 - ttl.GetTtl();
-    }
+    if (packet->RemovePacketTag(ttl)) hops = kDefaultTtl + 1 - ttl.GetTtl();
     world_.arrive(tag, node_id_, hops);
   }
 }

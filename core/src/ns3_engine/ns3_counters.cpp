@@ -101,10 +101,10 @@ void CounterSinks::connect(const ns3::Ptr<ns3::Node>& node, std::uint32_t node_i
   // Packets waiting for an address resolution are dropped by ArpL3Protocol (pending queue full,
   // neighbour known dead) and by the interface's ArpCache (resolution given up).
   connect_trace(node->GetObject<ns3::ArpL3Protocol>(), "Drop",
-                ns3::MakeCallback(&CounterSinks::on_arp_drop, this));
+                ns3::MakeCallback(&CounterSinks::on_arp_queue_drop, this));
   for (std::uint32_t i = 0; i < ip->GetNInterfaces(); ++i) {
     if (const ns3::Ptr<ns3::ArpCache> cache = ip->GetInterface(i)->GetArpCache()) {
-      connect_trace(cache, "Drop", ns3::MakeCallback(&CounterSinks::on_arp_drop, this));
+      connect_trace(cache, "Drop", ns3::MakeCallback(&CounterSinks::on_arp_give_up, this));
     }
   }
 }
@@ -178,8 +178,8 @@ void CounterSinks::on_dropped_mpdu(ns3::WifiMacDropReason reason,
   switch (reason) {
     case ns3::WIFI_MAC_DROP_FAILED_ENQUEUE:  // never fired by ns-3.37; counted by settle()
       break;
-    case ns3::WIFI_MAC_DROP_EXPIRED_LIFETIME:
-      ++counts_.queue_full;
+    case ns3::WIFI_MAC_DROP_EXPIRED_LIFETIME:  // waited longer than MaxDelay, as dcf80211 counts it
+      ++counts_.buffer_timeout;
       break;
     case ns3::WIFI_MAC_DROP_REACHED_RETRY_LIMIT:
       ++counts_.retry_limit;
@@ -189,9 +189,15 @@ void CounterSinks::on_dropped_mpdu(ns3::WifiMacDropReason reason,
   }
 }
 
-void CounterSinks::on_arp_drop(ns3::Ptr<const ns3::Packet> packet) {
+void CounterSinks::on_arp_queue_drop(ns3::Ptr<const ns3::Packet> packet) {
   ++counts_.arp_drops;
   if (is_data(packet)) ++counts_.queue_full;
+}
+
+// ARP asked its neighbour MaxRetries times in vain: the link failed, as a MAC's retry limit.
+void CounterSinks::on_arp_give_up(ns3::Ptr<const ns3::Packet> packet) {
+  ++counts_.arp_drops;
+  if (is_data(packet)) ++counts_.retry_limit;
 }
 
 // Every IP packet sent on an interface, IP header first: the routing protocol's own.

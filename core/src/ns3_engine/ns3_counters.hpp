@@ -85,7 +85,8 @@ class CounterSinks {
   void on_queue_enqueue(ns3::Ptr<const ns3::WifiMpdu> mpdu);
   void on_tc_drop(ns3::Ptr<const ns3::Packet> packet);
   void on_dropped_mpdu(ns3::WifiMacDropReason reason, ns3::Ptr<const ns3::WifiMpdu> mpdu);
-  void on_arp_drop(ns3::Ptr<const ns3::Packet> packet);
+  void on_arp_queue_drop(ns3::Ptr<const ns3::Packet> packet);  // pending queue full, dead
+  void on_arp_give_up(ns3::Ptr<const ns3::Packet> packet);     // resolution gave up
   void on_ip_tx(ns3::Ptr<const ns3::Packet> packet, ns3::Ptr<ns3::Ipv4> ipv4,
                 std::uint32_t interface);
   void on_ip_drop(const ns3::Ipv4Header& header, ns3::Ptr<const ns3::Packet> payload,

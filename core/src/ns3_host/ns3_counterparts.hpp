@@ -1,7 +1,8 @@
 // What of a scenario the ns-3 engine can run, and as what: each plugin with an ns-3 counterpart
-// and, for each of its parameters, the ns-3 attribute it sets. The scenario check refuses any
-// other plugin, and any parameter given in the file that has no attribute here; the mapping
-// (ns3_settings.cpp) reads the same table, so the two cannot disagree.
+// and, for each of its parameters, the ns-3 attribute it sets, or the one value that describes
+// what ns-3 does. The scenario check refuses any other plugin, a parameter with neither set to
+// other than its default, and a fixed behaviour's parameter set to another value; the mapping
+// (ns3_settings.cpp) reads the same tables, so the two cannot disagree.
 #pragma once
 
 #include <array>
@@ -139,6 +140,39 @@ inline constexpr std::array<Ns3Counterpart, 3> kNs3Routing{{
     {"flooding", "", ns3_tables::kFlooding},
     {"aodv", "ns3::aodv::RoutingProtocol", ns3_tables::kAodv},
 }};
+
+// A parameter ns-3 has no attribute for, but one fixed behaviour that a value of it describes:
+// with the ns-3 engine the parameter must have that value (booleans as 0 and 1), and any other
+// is refused, even the plugin's default, which would otherwise be silently not what ran.
+struct Ns3FixedBehaviour {
+  std::string_view plugin;
+  std::string_view param;
+  double value;
+  std::string_view behaviour;  // what ns-3 does, for the refusal
+};
+
+inline constexpr std::array<Ns3FixedBehaviour, 8> kNs3FixedBehaviour{{
+    {"aodv", "increment_seqno_on_break", 0,
+     "ns-3.37's AODV does not increment a broken route's destination sequence number"},
+    {"aodv", "enable_local_repair", 0, "ns-3.37's AODV has no local repair"},
+    {"aodv", "rrep_ack_required", 0,
+     "ns-3.37's AODV requests a RREP-ACK only when an intermediate node answers"},
+    {"aodv", "data_ttl", 64, "ns-3's IPv4 sends data with a TTL of 64"},
+    {"aodv", "broadcast_jitter_max_s", 0.01, "ns-3.37's AODV delays its broadcasts by up to 10 ms"},
+    {"aodv", "hello_start_jitter_max_s", 0.1,
+     "ns-3.37's AODV starts its HELLOs within the first 100 ms"},
+    {"aodv", "local_add_ttl", 2, "ns-3.37's AODV has no local repair to add TTL to"},
+    {"dcf80211", "header_bytes", 36,
+     "ns-3 sends real headers: MAC 24 + FCS 4 + LLC/SNAP 8 = 36 bytes"},
+}};
+
+inline const Ns3FixedBehaviour* find_ns3_fixed_behaviour(std::string_view plugin,
+                                                         std::string_view param) {
+  for (const auto& entry : kNs3FixedBehaviour) {
+    if (entry.plugin == plugin && entry.param == param) return &entry;
+  }
+  return nullptr;
+}
 
 // The counterpart of plugin `name` in `table`, or null.
 inline const Ns3Counterpart* find_ns3_counterpart(std::span<const Ns3Counterpart> table,

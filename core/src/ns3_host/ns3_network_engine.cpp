@@ -1,8 +1,12 @@
 #include "ns3_host/ns3_network_engine.hpp"
 
+#include <algorithm>
+#include <iterator>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
+#include "network/application_layer.hpp"
 #include "ns3_host/ns3_engine_library.hpp"
 #include "ns3_host/ns3_settings.hpp"
 
@@ -54,12 +58,19 @@ void Ns3NetworkEngine::run_step(const StepBatch& batch, StepResult& result) {
     xy_.push_back(position.y());
   }
   window_messages_.clear();
+  arrivals_.clear();
+  self_arrivals_.clear();
   for (const auto& message : batch.messages) {
     const SimTime at = batch.start + injection_offset(seed_, message.message_id, step_);
     const bool broadcast = message.destination == kBroadcast;
     metrics_.message_sent(broadcast);
     messages_[message.message_id] =
         SentMessage{message.source, message.destination, message.port, at, message.payload};
+    // As SwarmNet's own application layer: a message to its own source is delivered at once.
+    if (message.destination == message.source) {
+      self_arrivals_.push_back({message.message_id, message.source, at.count(), 0});
+      continue;
+    }
     ns3engine::Message out;
     out.message_id = message.message_id;
     out.source = message.source;
@@ -73,24 +84,34 @@ void Ns3NetworkEngine::run_step(const StepBatch& batch, StepResult& result) {
     window_messages_.push_back(std::move(out));
   }
   const std::uint64_t events_before = network_->report().events;
-  arrivals_.clear();
   next_start_ = batch.start + step_;
   network_->run_window(next_start_.count(), xy_, window_messages_, arrivals_);
-  for (const auto& arrival : arrivals_) deliver(arrival, result);
+  // Arrivals in time order, a self-delivery before ns-3's arrivals of the same instant.
+  std::stable_sort(self_arrivals_.begin(), self_arrivals_.end(),
+                   [](const auto& a, const auto& b) { return a.arrived_ns < b.arrived_ns; });
+  std::vector<ns3engine::Arrival> ordered;
+  ordered.reserve(arrivals_.size() + self_arrivals_.size());
+  std::merge(self_arrivals_.begin(), self_arrivals_.end(), arrivals_.begin(), arrivals_.end(),
+             std::back_inserter(ordered),
+             [](const auto& a, const auto& b) { return a.arrived_ns < b.arrived_ns; });
+  for (const auto& arrival : ordered) deliver(arrival, result);
+  forget_before(next_start_ - ApplicationLayer::kDuplicateWindow);
   result.events = network_->report().events - events_before;
 }
 
 void Ns3NetworkEngine::deliver(const ns3engine::Arrival& arrival, StepResult& result) {
   const auto found = messages_.find(arrival.message_id);
   if (found == messages_.end()) {
-    throw std::runtime_error("ns-3 engine: an arrival of message " +
-                             std::to_string(arrival.message_id) + ", which was never sent");
+    // Sent more than kDuplicateWindow ago and forgotten (as the native engine forgets it);
+    // no ns-3 queue holds a packet that long with the scenario's mappings.
+    ++late_arrivals_;
+    return;
   }
   const SentMessage& message = found->second;
   const bool broadcast = message.destination == kBroadcast;
   // A unicast message is the destination's alone, as with the native engine's applications.
   if (!broadcast && arrival.receiver != message.destination) return;
-  if (!delivered_.emplace(arrival.message_id, arrival.receiver).second) {
+  if (!delivered_.emplace(message.sent_at.count(), arrival.message_id, arrival.receiver).second) {
     metrics_.duplicate_suppressed();
     return;
   }
@@ -105,12 +126,23 @@ void Ns3NetworkEngine::deliver(const ns3engine::Arrival& arrival, StepResult& re
                                        message.port, message.payload});
 }
 
+// Messages sent before `horizon`, and the record of their deliveries, are forgotten: the memory
+// stays bounded by what a window of kDuplicateWindow sends, as in the native application layer.
+void Ns3NetworkEngine::forget_before(SimTime horizon) {
+  for (auto it = messages_.begin(); it != messages_.end() && it->second.sent_at < horizon;) {
+    it = messages_.erase(it);
+  }
+  delivered_.erase(delivered_.begin(), delivered_.lower_bound(std::make_tuple(
+                                           horizon.count(), std::uint64_t{0}, RobotId{0})));
+}
+
 NetworkReport Ns3NetworkEngine::report() const {
   const ns3engine::Report counters = network_->report();
   const std::uint64_t in_flight = metrics_.unicast_sent() - metrics_.delivered();
   NetworkReport report = metrics_.report(in_flight, counters.events);
   report.mac = named_counts(counters.mac);
   report.routing = named_counts(counters.routing);
+  report.routing.push_back({"late_arrivals", late_arrivals_});
   report.dropped = named_counts(counters.drops);
   return report;
 }

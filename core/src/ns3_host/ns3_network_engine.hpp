@@ -1,15 +1,15 @@
 // The network half with ns-3.37 as its engine (`network.engine: ns3`, docs/ns3-engine.md): the
 // step protocol's batches go to an ns-3 network in the engine module, its arrivals come back as
 // deliveries. What the robots see is decided here, as SwarmNet's own engine decides it: messages
-// taken in at the same instants (injection_offset), each delivered once per receiver (later
-// copies counted as duplicates), and the same metrics (network/network_metrics.hpp) computed
-// from the same events.
+// taken in at the same instants (injection_offset), a message to its own source delivered at
+// once, each delivered once per receiver (later copies counted as duplicates, forgotten after
+// ApplicationLayer::kDuplicateWindow), and the same metrics (network/network_metrics.hpp).
 #pragma once
 
 #include <map>
 #include <memory>
 #include <set>
-#include <utility>
+#include <tuple>
 #include <vector>
 
 #include "network/network_engine.hpp"
@@ -41,6 +41,7 @@ class Ns3NetworkEngine final : public NetworkEngine {
 
   void check_batch(const StepBatch& batch) const;
   void deliver(const ns3engine::Arrival& arrival, StepResult& result);
+  void forget_before(SimTime horizon);
 
   std::uint64_t seed_;
   SimTime step_;
@@ -48,12 +49,16 @@ class Ns3NetworkEngine final : public NetworkEngine {
   SimTime next_start_{};
   std::unique_ptr<ns3engine::Network> network_;
   NetworkMetrics metrics_;
-  std::map<std::uint64_t, SentMessage> messages_;          // by message id
-  std::set<std::pair<std::uint64_t, RobotId>> delivered_;  // (message, receiver)
+  // By message id. Ids ascend in send order and a step's messages are sent within the step, so
+  // the map's order is the order of sent_at up to one step: forget_before() relies on it.
+  std::map<std::uint64_t, SentMessage> messages_;
+  std::set<std::tuple<std::int64_t, std::uint64_t, RobotId>> delivered_;  // sent_at, id, receiver
+  std::uint64_t late_arrivals_ = 0;  // arrivals of messages already forgotten
   // Buffers reused across steps.
   std::vector<double> xy_;
   std::vector<ns3engine::Message> window_messages_;
   std::vector<ns3engine::Arrival> arrivals_;
+  std::vector<ns3engine::Arrival> self_arrivals_;
 };
 
 }  // namespace swarmnet

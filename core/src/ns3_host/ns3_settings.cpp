@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -11,6 +12,7 @@
 
 #include "ns3_host/ns3_counterparts.hpp"
 #include "ns3_host/ns3_wifi_modes.hpp"
+#include "swarmnet/units.hpp"
 
 namespace swarmnet {
 
@@ -62,6 +64,13 @@ const Ns3Counterpart& counterpart_of(std::span<const Ns3Counterpart> table,
     throw std::invalid_argument(std::string("the ") + kind + " plugin '" + choice.name +
                                 "' has no ns-3 counterpart");
   }
+  for (const auto& [param, value] : choice.params.values()) {
+    const Ns3FixedBehaviour* fixed = find_ns3_fixed_behaviour(choice.name, param);
+    if (fixed != nullptr && as_real(value) != fixed->value) {
+      throw std::invalid_argument("'" + choice.name + "' parameter " + param + ": " +
+                                  std::string(fixed->behaviour));
+    }
+  }
   return *counterpart;
 }
 
@@ -87,6 +96,9 @@ ns3engine::ObjectSpec loss_model(const PluginChoice& choice) {
       throw std::invalid_argument("two_ray_ground: ns-3 has one antenna height for both ends");
     }
     spec.attributes.push_back({"HeightAboveZ", number_text(tx)});
+    // The plugin applies its loss down to lambda / (4 pi); ns-3 stops at MinDistance (0.5 m).
+    const double wavelength = kSpeedOfLightMps / choice.params.real("frequency_hz");
+    spec.attributes.push_back({"MinDistance", number_text(wavelength / (4.0 * std::numbers::pi))});
   }
   return spec;
 }
@@ -139,9 +151,11 @@ void map_mac(const NetworkSettings& settings, ns3engine::Config& config) {
   const Ns3Options& options = settings.network.ns3;
   config.rate_manager.type_id = rate_manager_type(options.rate_manager);
   if (options.rate_manager == "constant") {
-    config.rate_manager.attributes.push_back(
-        {"DataMode",
-         mode(options.data_mode, options.standard, mac.params.real("data_rate_bps"), "data_mode")});
+    const std::string data_mode =
+        mode(options.data_mode, options.standard, mac.params.real("data_rate_bps"), "data_mode");
+    config.rate_manager.attributes.push_back({"DataMode", data_mode});
+    // Broadcasts at the data rate, as dcf80211 sends them (ns-3 would use the lowest mode).
+    config.rate_manager.attributes.push_back({"NonUnicastMode", data_mode});
     config.rate_manager.attributes.push_back(
         {"ControlMode", mode(options.control_mode, options.standard,
                              mac.params.real("control_rate_bps"), "control_mode")});
@@ -185,6 +199,9 @@ void map_phy(const PhyConfig& phy, ns3engine::Config& config) {
   config.phy.push_back({"RxNoiseFigure", number_text(phy.noise_figure_db)});
   config.phy.push_back({"CcaEdThreshold", number_text(phy.energy_detection_dbm)});
   config.phy.push_back({"CcaSensitivity", number_text(phy.cca_threshold_dbm)});
+  // ns-3 discards anything weaker than RxSensitivity (-101 dBm by default) before preamble
+  // detection; SwarmNet's sinr PHY has no such floor above the preamble's own.
+  config.phy.push_back({"RxSensitivity", number_text(std::min(phy.cca_threshold_dbm, -101.0))});
   if (phy.bandwidth_hz != 20e6) {
     config.phy.push_back(
         {"ChannelSettings",
@@ -195,30 +212,28 @@ void map_phy(const PhyConfig& phy, ns3engine::Config& config) {
 }
 
 // AODV's times that the aodv plugin derives from the others when given as 0, derived the same
-// way (RFC 3561 section 10): ns-3 keeps fixed defaults for them whatever the others are.
-std::vector<std::pair<std::string, double>> aodv_derived_times(const ParamSet& params) {
-  const auto given_or = [&](const char* name, double derived) {
-    const double value = params.real(name);
-    return value > 0.0 ? value : derived;
+// way (RFC 3561 section 10) and in the same whole nanoseconds (aodv_parameters.cpp): ns-3 keeps
+// fixed defaults for them whatever the others are.
+std::vector<std::pair<std::string, SimTime>> aodv_derived_times(const ParamSet& params) {
+  const auto given_or = [&](const char* name, SimTime derived) {
+    const SimTime value = from_seconds(params.real(name));
+    return value == kTimeZero ? derived : value;
   };
-  const double node_traversal = params.real("node_traversal_time_s");
-  const double active_route = params.real("active_route_timeout_s");
-  const double net_traversal =
-      given_or("net_traversal_time_s",
-               2.0 * node_traversal * static_cast<double>(params.integer("net_diameter")));
-  const double path_discovery = given_or("path_discovery_time_s", 2.0 * net_traversal);
+  const SimTime node_traversal = from_seconds(params.real("node_traversal_time_s"));
+  const SimTime active_route = from_seconds(params.real("active_route_timeout_s"));
+  const SimTime hello = from_seconds(params.real("hello_interval_s"));
+  const SimTime net_traversal =
+      given_or("net_traversal_time_s", 2 * node_traversal * params.integer("net_diameter"));
+  const SimTime path_discovery = given_or("path_discovery_time_s", 2 * net_traversal);
+  const std::int64_t retries = std::max<std::int64_t>(params.integer("rreq_retries"), 1);
   return {
       {"NetTraversalTime", net_traversal},
       {"PathDiscoveryTime", path_discovery},
-      {"NextHopWait", given_or("next_hop_wait_s", node_traversal + 0.01)},
+      {"NextHopWait", given_or("next_hop_wait_s", node_traversal + from_seconds(0.01))},
       {"MyRouteTimeout",
-       given_or("my_route_timeout_s", 2.0 * std::max(path_discovery, active_route))},
-      {"BlackListTimeout",
-       given_or("blacklist_timeout_s",
-                static_cast<double>(std::max<std::int64_t>(params.integer("rreq_retries"), 1)) *
-                    net_traversal)},
-      {"DeletePeriod",
-       given_or("delete_period_s", 5.0 * std::max(active_route, params.real("hello_interval_s")))},
+       given_or("my_route_timeout_s", 2 * std::max(path_discovery, active_route))},
+      {"BlackListTimeout", given_or("blacklist_timeout_s", net_traversal * retries)},
+      {"DeletePeriod", given_or("delete_period_s", 5 * std::max(active_route, hello))},
   };
 }
 
@@ -244,8 +259,8 @@ void map_routing(const NetworkSettings& settings, ns3engine::Config& config) {
           {std::string(row.attribute),
            attribute_text(routing.params.values().at(std::string(row.param)), row.conversion)});
     }
-    for (const auto& [attribute, seconds] : aodv_derived_times(routing.params)) {
-      config.routing_attributes.push_back({attribute, time_text(seconds)});
+    for (const auto& [attribute, time] : aodv_derived_times(routing.params)) {
+      config.routing_attributes.push_back({attribute, std::to_string(time.count()) + "ns"});
     }
     return;
   }

@@ -1,5 +1,6 @@
 #include "scenario/ns3_engine_check.hpp"
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -42,7 +43,10 @@ class KeyFacts {
   // True when the real value at `path` is present and differs from `fallback`.
   [[nodiscard]] bool real_differs(const KeyPath& path, double fallback) const {
     const YAML::Node node = at(path);
-    return node.IsDefined() && node.IsScalar() && node.as<double>() != fallback;
+    if (!node.IsDefined() || !node.IsScalar()) return false;
+    const std::string text = node.as<std::string>();
+    if (text == "true" || text == "false") return (text == "true" ? 1.0 : 0.0) != fallback;
+    return node.as<double>() != fallback;
   }
   // The checked value at `path`, or an undefined node when it is absent or was invalid.
   [[nodiscard]] YAML::Node at(const KeyPath& path) const {
@@ -78,12 +82,17 @@ class KeyFacts {
   PluginLoader& loader_;
 };
 
+// `value` as the scenario would write it: a boolean when the scenario's value is one.
+std::string format_fixed(double value, const std::string& written) {
+  if (written == "true" || written == "false") return value != 0.0 ? "true" : "false";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
 std::string names_of(std::span<const Ns3Counterpart> table) {
   std::string names;
-  for (const auto& entry : table) {
-    if (names.find(std::string(entry.plugin)) != std::string::npos) continue;
-    names += (names.empty() ? "" : ", ") + std::string(entry.plugin);
-  }
+  for (const auto& entry : table) names += (names.empty() ? "" : ", ") + std::string(entry.plugin);
   return names;
 }
 
@@ -105,6 +114,18 @@ const Ns3Counterpart* check_plugin(KeyFacts& keys, const KeyPath& path,
   for (const auto& entry : params) {
     const std::string param = entry.first.as<std::string>();
     const KeyPath param_path = path / "params" / param;
+    if (const Ns3FixedBehaviour* fixed = find_ns3_fixed_behaviour(name, param)) {
+      if (keys.real_differs(param_path, fixed->value)) {
+        keys.refuse(keys.given(param_path) ? param_path : KeyPath({"network", "engine"}),
+                    "'" + name + "' parameter " + param + " is " + keys.text(param_path) +
+                        (keys.given(param_path) ? "" : " (its default)") + ", but " +
+                        std::string(fixed->behaviour),
+                    param + ": " + format_fixed(fixed->value, keys.text(param_path)) +
+                        " in network." + (path.text() == "network.mac" ? "mac" : "routing") +
+                        ".params with network.engine: ns3");
+      }
+      continue;
+    }
     if (find_ns3_attribute(*counterpart, param) == nullptr &&
         keys.differs_from_default(path, param)) {
       keys.refuse(param_path, "'" + name + "' parameter " + param + " has no ns-3 counterpart",
@@ -171,7 +192,15 @@ void check_phy(KeyFacts& keys) {
 void check_rates(KeyFacts& keys) {
   const KeyPath ns3({"network", "ns3"});
   const std::string standard = keys.text(ns3 / "standard");
-  if (keys.text(ns3 / "rate_manager") != "constant") return;
+  if (keys.text(ns3 / "rate_manager") != "constant") {
+    for (const char* key : {"data_mode", "control_mode"}) {
+      if (!keys.text(ns3 / key).empty()) {
+        keys.refuse(ns3 / key, "applies only to the constant rate manager",
+                    "no value, or network.ns3.rate_manager: constant");
+      }
+    }
+    return;
+  }
   const KeyPath params({"network", "mac", "params"});
   for (const auto& [mode_key, rate_key] :
        {std::pair{"data_mode", "data_rate_bps"}, std::pair{"control_mode", "control_rate_bps"}}) {
