@@ -75,6 +75,9 @@ def main():
                         help="network configuration and the study's table to compare with")
     parser.add_argument("--engine", choices=["native", "ns3"], default="native",
                         help="the network half of the integrated and network-alone runs")
+    parser.add_argument("--no-network-alone", action="store_true",
+                        help="skip the network-alone replay (it costs as much as the run's network "
+                             "half)")
     parser.add_argument("--ns2-robots", default="",
                         help="sizes at which to run ns-2.35 alone too (--config ns2 only)")
     parser.add_argument("--ns2-cpu-limit-s", default="0",
@@ -103,12 +106,14 @@ def main():
         swarmnet(binary, "run", str(scenario), *common, *engine, "--out", str(integrated),
                  "--overwrite")
         swarmnet(binary, "run", str(scenario), *common, *ONE_HOP, "--out", str(alone), "--overwrite")
-        swarmnet(binary, "replay", str(integrated), "--out", str(replay), "--quiet")
-        i, a, r = summary(integrated), summary(alone), summary(replay)
+        if not args.no_network_alone:
+            swarmnet(binary, "replay", str(integrated), "--out", str(replay), "--quiet")
+        i, a = summary(integrated), summary(alone)
+        r = None if args.no_network_alone else summary(replay)
         rows.append({"config": args.config, "engine": args.engine, "robots": n, "arena_m": side, "integrated": i["cpu_s"],
                      "wall_s": i["wall_s"], "realtime_factor": i["realtime_factor"],
                      "pdr": i["pdr"], "robot_alone_cpu_s": a["cpu_s"]["robot"],
-                     "network_alone_cpu_s": r["cpu_s"]["network"]})
+                     "network_alone_cpu_s": r["cpu_s"]["network"] if r else None})
         if n in ns2_sizes:
             ns2 = subprocess.run([sys.executable, str(root / "scripts" / "ns2_standalone.py"),
                                   str(integrated), "--cpu-limit-s", args.ns2_cpu_limit_s],
@@ -145,7 +150,8 @@ def write_outputs(out, rows, simulator, study_table, with_ns2, engine):
         study_alone = f"{s[3]} / {s[4]}" if s else "-"
         lines.append(f"| {row['robots']} | {row['arena_m']:g} | {study} | {c['robot']:.2f} + "
                      f"{c['network']:.2f} + {c['transport']:.2f} = {c['total']:.2f} | {study_alone} | "
-                     f"{row['robot_alone_cpu_s']:.2f} / {row['network_alone_cpu_s']:.2f} | "
+                     f"{row['robot_alone_cpu_s']:.2f} / "
+                     f"{'-' if row['network_alone_cpu_s'] is None else format(row['network_alone_cpu_s'], '.2f')} | "
                      f"{row['wall_s']:.1f} ({row['realtime_factor']:.1f}x) | {row['pdr']:.3f} |")
         if with_ns2:
             lines[-1] += ns2_cell(row.get("ns2_standalone"))
