@@ -9,71 +9,19 @@
 #include <stdexcept>
 #include <string>
 
+#include "ns3_study_settings.hpp"
+
 namespace swarmnet {
 namespace {
 
+using test::aodv_params;
+
 PluginChoice choice(std::string name, PluginKind kind, ParamSet params) {
-  return PluginChoice{std::move(name), kind, std::move(params), {}};
-}
-
-ParamSet dcf80211_params() {
-  return ParamSet({{"data_rate_bps", 6e6},
-                   {"control_rate_bps", 6e6},
-                   {"slot_s", 9e-6},
-                   {"sifs_s", 16e-6},
-                   {"cw_min", std::int64_t{15}},
-                   {"cw_max", std::int64_t{1023}},
-                   {"short_retry_limit", std::int64_t{7}},
-                   {"long_retry_limit", std::int64_t{4}},
-                   {"rts_threshold_bytes", std::int64_t{65535}},
-                   {"queue_limit", std::int64_t{500}},
-                   {"queue_max_delay_s", 0.5},
-                   {"header_bytes", std::int64_t{36}}});
-}
-
-ParamSet aodv_params() {
-  ParamSet p({{"hello_interval_s", 1.0},
-              {"allowed_hello_loss", std::int64_t{2}},
-              {"active_route_timeout_s", 3.0},
-              {"net_diameter", std::int64_t{35}},
-              {"node_traversal_time_s", 0.04},
-              {"net_traversal_time_s", 0.0},
-              {"path_discovery_time_s", 0.0},
-              {"next_hop_wait_s", 0.0},
-              {"my_route_timeout_s", 0.0},
-              {"blacklist_timeout_s", 0.0},
-              {"delete_period_s", 0.0},
-              {"rreq_retries", std::int64_t{2}},
-              {"rreq_rate_limit", std::int64_t{10}},
-              {"rerr_rate_limit", std::int64_t{10}},
-              {"ttl_start", std::int64_t{1}},
-              {"ttl_increment", std::int64_t{2}},
-              {"ttl_threshold", std::int64_t{7}},
-              {"timeout_buffer", std::int64_t{2}},
-              {"max_queue_len", std::int64_t{64}},
-              {"max_queue_time_s", 30.0},
-              {"destination_only", false},
-              {"gratuitous_reply", true},
-              {"enable_hello", true},
-              {"enable_broadcast", true},
-              {"link_layer_feedback", true}});
-  return p;
+  return test::plugin(std::move(name), kind, std::move(params));
 }
 
 NetworkSettings paper_settings() {
-  NetworkSettings s;
-  s.seed = 7;
-  s.nodes = 12;
-  s.network.propagation = {choice(
-      "log_distance", PluginKind::propagation,
-      ParamSet(
-          {{"exponent", 3.0}, {"reference_distance_m", 1.0}, {"reference_loss_db", 46.6777}}))};
-  s.network.phy.model = PhyModel::sinr;
-  s.network.phy.tx_power_dbm = 27.0531;
-  s.network.mac = choice("dcf80211", PluginKind::mac, dcf80211_params());
-  s.network.routing = choice("aodv", PluginKind::routing, aodv_params());
-  s.network.engine = NetworkEngineKind::ns3;
-  return s;
+  return test::study_settings(12, 7, choice("aodv", PluginKind::routing, aodv_params()));
 }
 
 std::string value_of(const std::vector<ns3engine::Attribute>& attributes, const std::string& name) {

@@ -370,30 +370,33 @@ TEST(Ns3Network, OtherStandardsDeliver) {
   }
 }
 
-TEST(Ns3Network, OlsrCrossesALineAfterWarmUp) {
-  Config config = line_config(3, Routing::olsr);
-  config.routing_attributes = {{"HelloInterval", "1s"}, {"TcInterval", "2s"}};
+// A proactive protocol on a 3-node line: after warm-up, 0 reaches 2 through 1. Returns the
+// network's report.
+Report expect_crosses_line_after_warm_up(const Config& config) {
   Ns3Network network(config);
   const std::vector<Arrival> arrivals =
       run(network, 10 * kS, line(3, 100.0), {message(1, 0, 2, 8 * kS + 77)});
-  ASSERT_EQ(arrivals.size(), 1U);
-  EXPECT_EQ(arrivals[0].receiver, 2U);
-  EXPECT_EQ(arrivals[0].hops, 2U);
+  EXPECT_EQ(arrivals.size(), 1U);
+  if (!arrivals.empty()) {
+    EXPECT_EQ(arrivals[0].receiver, 2U);
+    EXPECT_EQ(arrivals[0].hops, 2U);
+  }
   const Report report = network.report();
   EXPECT_GT(count(report.routing, "control_packets"), 0U);
+  return report;
+}
+
+TEST(Ns3Network, OlsrCrossesALineAfterWarmUp) {
+  Config config = line_config(3, Routing::olsr);
+  config.routing_attributes = {{"HelloInterval", "1s"}, {"TcInterval", "2s"}};
+  const Report report = expect_crosses_line_after_warm_up(config);
   EXPECT_EQ(count(report.routing, "data_forwards"), 1U);
 }
 
 TEST(Ns3Network, DsdvCrossesALineAfterWarmUp) {
   Config config = line_config(3, Routing::dsdv);
   config.routing_attributes = {{"PeriodicUpdateInterval", "2s"}, {"SettlingTime", "1s"}};
-  Ns3Network network(config);
-  const std::vector<Arrival> arrivals =
-      run(network, 10 * kS, line(3, 100.0), {message(1, 0, 2, 8 * kS + 77)});
-  ASSERT_EQ(arrivals.size(), 1U);
-  EXPECT_EQ(arrivals[0].receiver, 2U);
-  EXPECT_EQ(arrivals[0].hops, 2U);
-  EXPECT_GT(count(network.report().routing, "control_packets"), 0U);
+  expect_crosses_line_after_warm_up(config);
 }
 
 TEST(Ns3Network, OlsrWithoutARouteCountsNoRoute) {

@@ -18,7 +18,7 @@
 namespace swarmnet::ns3engine {
 
 // Bumped whenever anything in this header changes; the kernel refuses a module of another one.
-inline constexpr std::uint32_t kApiVersion = 3;
+inline constexpr std::uint32_t kApiVersion = 4;
 
 inline constexpr std::uint32_t kBroadcastNode = 0xFFFFFFFFU;
 
@@ -130,6 +130,8 @@ class Network {
                           const std::vector<Message>& messages, std::vector<Arrival>& arrivals) = 0;
 
   [[nodiscard]] virtual Report report() const = 0;
+  // ns-3 events run so far (Report::events), without building the counters.
+  [[nodiscard]] virtual std::uint64_t events() const = 0;
 };
 
 }  // namespace swarmnet::ns3engine

@@ -355,8 +355,8 @@ void Ns3Network::run_until(std::int64_t end_ns) {
   }
 }
 
-Report Ns3Network::report() const {
-  return counters_.report(ns3::Simulator::GetEventCount() - stop_events_);
-}
+Report Ns3Network::report() const { return counters_.report(events()); }
+
+std::uint64_t Ns3Network::events() const { return ns3::Simulator::GetEventCount() - stop_events_; }
 
 }  // namespace swarmnet::ns3engine

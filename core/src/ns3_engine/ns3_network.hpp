@@ -32,6 +32,7 @@ class Ns3Network final : public Network {
                   const std::vector<Message>& messages, std::vector<Arrival>& arrivals) override;
 
   [[nodiscard]] Report report() const override;
+  [[nodiscard]] std::uint64_t events() const override;
 
  private:
   void build(const Config& config);

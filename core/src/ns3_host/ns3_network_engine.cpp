@@ -83,20 +83,19 @@ void Ns3NetworkEngine::run_step(const StepBatch& batch, StepResult& result) {
     }
     window_messages_.push_back(std::move(out));
   }
-  const std::uint64_t events_before = network_->report().events;
+  const std::uint64_t events_before = network_->events();
   next_start_ = batch.start + step_;
   network_->run_window(next_start_.count(), xy_, window_messages_, arrivals_);
   // Arrivals in time order, a self-delivery before ns-3's arrivals of the same instant.
   std::stable_sort(self_arrivals_.begin(), self_arrivals_.end(),
                    [](const auto& a, const auto& b) { return a.arrived_ns < b.arrived_ns; });
-  std::vector<ns3engine::Arrival> ordered;
-  ordered.reserve(arrivals_.size() + self_arrivals_.size());
+  ordered_.clear();
   std::merge(self_arrivals_.begin(), self_arrivals_.end(), arrivals_.begin(), arrivals_.end(),
-             std::back_inserter(ordered),
+             std::back_inserter(ordered_),
              [](const auto& a, const auto& b) { return a.arrived_ns < b.arrived_ns; });
-  for (const auto& arrival : ordered) deliver(arrival, result);
+  for (const auto& arrival : ordered_) deliver(arrival, result);
   forget_before(next_start_ - ApplicationLayer::kDuplicateWindow);
-  result.events = network_->report().events - events_before;
+  result.events = network_->events() - events_before;
 }
 
 void Ns3NetworkEngine::deliver(const ns3engine::Arrival& arrival, StepResult& result) {

@@ -59,6 +59,7 @@ class Ns3NetworkEngine final : public NetworkEngine {
   std::vector<ns3engine::Message> window_messages_;
   std::vector<ns3engine::Arrival> arrivals_;
   std::vector<ns3engine::Arrival> self_arrivals_;
+  std::vector<ns3engine::Arrival> ordered_;  // both, merged in time order
 };
 
 }  // namespace swarmnet

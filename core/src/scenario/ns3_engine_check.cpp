@@ -50,22 +50,7 @@ class KeyFacts {
   }
   // The checked value at `path`, or an undefined node when it is absent or was invalid.
   [[nodiscard]] YAML::Node at(const KeyPath& path) const {
-    YAML::Node node;
-    node.reset(tree_);
-    for (const auto& part : path.parts()) {
-      YAML::Node child;
-      if (node.IsSequence()) {
-        const std::size_t index = std::stoul(part);
-        if (index >= node.size()) return YAML::Node(YAML::NodeType::Undefined);
-        child = node[index];
-      } else if (node.IsMap() && node[part]) {
-        child = node[part];
-      } else {
-        return YAML::Node(YAML::NodeType::Undefined);
-      }
-      node.reset(child);
-    }
-    return node;
+    return checked_node_at(tree_, path).value_or(YAML::Node(YAML::NodeType::Undefined));
   }
   [[nodiscard]] std::string text(const KeyPath& path) const {
     const YAML::Node node = at(path);
@@ -88,6 +73,13 @@ std::string format_fixed(double value, const std::string& written) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%g", value);
   return buffer;
+}
+
+// "'aodv' parameter data_ttl", as refusals name a plugin's parameter.
+std::string plugin_parameter(const std::string& plugin, const std::string& param) {
+  std::string text = "'";
+  text.append(plugin).append("' parameter ").append(param);
+  return text;
 }
 
 std::string names_of(std::span<const Ns3Counterpart> table) {
@@ -116,19 +108,23 @@ const Ns3Counterpart* check_plugin(KeyFacts& keys, const KeyPath& path,
     const KeyPath param_path = path / "params" / param;
     if (const Ns3FixedBehaviour* fixed = find_ns3_fixed_behaviour(name, param)) {
       if (keys.real_differs(param_path, fixed->value)) {
-        keys.refuse(keys.given(param_path) ? param_path : KeyPath({"network", "engine"}),
-                    "'" + name + "' parameter " + param + " is " + keys.text(param_path) +
-                        (keys.given(param_path) ? "" : " (its default)") + ", but " +
-                        std::string(fixed->behaviour),
-                    param + ": " + format_fixed(fixed->value, keys.text(param_path)) +
-                        " in network." + (path.text() == "network.mac" ? "mac" : "routing") +
-                        ".params with network.engine: ns3");
+        // A default is the engine's choice to answer for, a value given is the user's.
+        const bool given = keys.given(param_path);
+        std::string what = plugin_parameter(name, param);
+        what += " is ";
+        what += keys.text(param_path);
+        if (!given) what += " (its default)";
+        what += ", but ";
+        what += fixed->behaviour;
+        keys.refuse(given ? param_path : KeyPath({"network", "engine"}), what,
+                    param + ": " + format_fixed(fixed->value, keys.text(param_path)) + " in " +
+                        path.text() + ".params with network.engine: ns3");
       }
       continue;
     }
     if (find_ns3_attribute(*counterpart, param) == nullptr &&
         keys.differs_from_default(path, param)) {
-      keys.refuse(param_path, "'" + name + "' parameter " + param + " has no ns-3 counterpart",
+      keys.refuse(param_path, plugin_parameter(name, param).append(" has no ns-3 counterpart"),
                   "its default with network.engine: ns3 (docs/ns3-engine.md lists what maps)");
     }
   }

@@ -74,6 +74,28 @@ YAML::Mark ScenarioChecker::mark_of(const KeyPath& path) const {
   return it != marks_.end() ? it->second : YAML::Mark::null_mark();
 }
 
+std::optional<YAML::Node> checked_node_at(const YAML::Node& tree, const KeyPath& path) {
+  YAML::Node node;
+  node.reset(tree);
+  for (const auto& part : path.parts()) {
+    YAML::Node child;
+    if (node.IsSequence()) {
+      if (part.empty() || part.find_first_not_of("0123456789") != std::string::npos) {
+        return std::nullopt;
+      }
+      const std::size_t index = std::stoul(part);
+      if (index >= node.size()) return std::nullopt;
+      child = node[index];
+    } else if (node.IsMap() && node[part]) {
+      child = node[part];
+    } else {
+      return std::nullopt;
+    }
+    node.reset(child);
+  }
+  return node;
+}
+
 bool ScenarioChecker::given(const KeyPath& path) const {
   if (!marks_.contains(path.text())) return false;
   for (const auto& defaulted : defaulted_) {

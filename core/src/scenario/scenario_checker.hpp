@@ -19,6 +19,10 @@
 
 namespace swarmnet {
 
+// The node at `path` of a checked tree (a list element by its index), if it is there: an absent
+// or invalid value is not, since the checker leaves those out.
+std::optional<YAML::Node> checked_node_at(const YAML::Node& tree, const KeyPath& path);
+
 class ScenarioChecker {
  public:
   // `base_dir` is the scenario file's directory (for relative plugin_paths). Directories of a

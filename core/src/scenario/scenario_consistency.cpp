@@ -14,21 +14,8 @@ namespace swarmnet {
 
 namespace {
 
-// The node at `path` of the checked tree, if it passed its check.
-std::optional<YAML::Node> at(const YAML::Node& tree, const KeyPath& path) {
-  YAML::Node node;
-  node.reset(tree);
-  for (const auto& part : path.parts()) {
-    const YAML::Node& parent = node;
-    if (!parent.IsMap() || !parent[part]) return std::nullopt;
-    YAML::Node child = parent[part];
-    node.reset(child);
-  }
-  return node;
-}
-
 std::optional<double> real_at(const YAML::Node& tree, const KeyPath& path) {
-  const auto node = at(tree, path);
+  const auto node = checked_node_at(tree, path);
   if (!node || !node->IsScalar()) return std::nullopt;
   return node->as<double>();
 }
@@ -119,7 +106,7 @@ void check_steps(const YAML::Node& tree, const ScenarioChecker& checker, Problem
 void check_objects(const YAML::Node& tree, const ScenarioChecker& checker, double width_m,
                    double height_m, ProblemList& problems) {
   const KeyPath objects_path({"arena", "objects"});
-  const auto objects_node = at(tree, objects_path);
+  const auto objects_node = checked_node_at(tree, objects_path);
   if (!objects_node) return;
   for (std::size_t i = 0; i < objects_node->size(); ++i) {
     const YAML::Node node = (*objects_node)[i];
@@ -170,7 +157,7 @@ void check_consistency(YAML::Node& tree, const ScenarioChecker& checker, Problem
 
   // Obstacles inside the arena.
   const KeyPath obstacles_path({"arena", "obstacles"});
-  const auto obstacles_node = at(tree, obstacles_path);
+  const auto obstacles_node = checked_node_at(tree, obstacles_path);
   std::vector<Rect> obstacles;
   bool obstacles_valid = obstacles_node.has_value();
   if (obstacles_node) {
@@ -191,11 +178,11 @@ void check_consistency(YAML::Node& tree, const ScenarioChecker& checker, Problem
 
   // The placement region: inside the arena, or the whole arena when not given.
   const KeyPath placement_path({"robots", "placement"});
-  auto placement = at(tree, placement_path);
+  auto placement = checked_node_at(tree, placement_path);
   if (!placement) return;
   const KeyPath region_path = placement_path / "region";
   std::optional<Rect> region;
-  if (const auto region_node = at(tree, region_path)) {
+  if (const auto region_node = checked_node_at(tree, region_path)) {
     region = rect_of(*region_node);
     if (region && !check_rect(*region, *width, *height, region_path, checker.mark_of(region_path),
                               "a region", problems)) {
