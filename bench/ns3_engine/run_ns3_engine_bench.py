@@ -6,10 +6,10 @@ the reference study's scenario (configs/paper/evaluation.yaml: 802.11a DCF at 6 
 reception with a 120 m range, AODV, 20% of the robots sending 512-byte messages 5 times a
 second) runs, interleaved:
   native      `swarmnet run` with network.engine: native (the default)
-  ns3-static  `swarmnet run` with network.engine: ns3 and network.ns3.arp: static: ns-3.37 as the
+  ns3-static  `swarmnet run` with network.engine: ns3 and network.arp: static: ns-3.37 as the
               network half, with the models corresponding to SwarmNet's (no ARP frames, as
               SwarmNet's own engine has no ARP)
-  ns3         the same with ns-3's ARP (network.ns3.arp: dynamic, the default): ns-3 as its
+  ns3         the same with ns-3's ARP (network.arp: ns3, the default): ns-3 as its
               users run it
 and, on the ns3 run's own recorded motion and messages, ns-3 alone twice:
   replay       swarmnet_ns3_replay (an independent ns-3 program: ns-2 mobility, the same stack,
@@ -36,7 +36,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent.parent
 # engine is told to do as ns-3 does, so that the models correspond (docs/ns3-engine.md).
 ALIGNED = ["--set", "network.routing.params.increment_seqno_on_break=false"]
 VARIANTS = {"native": ["--set", "network.engine=native"],
-            "ns3_static": ["--set", "network.engine=ns3", "--set", "network.ns3.arp=static"],
+            "ns3_static": ["--set", "network.engine=ns3", "--set", "network.arp=static"],
             "ns3": ["--set", "network.engine=ns3"]}
 
 

@@ -50,6 +50,7 @@ struct TestNetwork::TestNode final : RoutingContext {
     network.drops_.push_back({id, packet.message_id, packet.is_control(), reason});
   }
   void trace_forward(const Packet& /*packet*/) override { ++counters["test_forwards"]; }
+  [[nodiscard]] bool link_address_known(NodeId /*neighbor*/) const override { return true; }
 
   TestNetwork& network;
   NodeId id;

@@ -72,7 +72,7 @@ TEST(Ns3Engine, OlsrAndDsdvRouteUnderDirect) {
 TEST(Ns3Engine, StaticArpSendsNoArpFrameAndDynamicArpDoes) {
   TempDir dir;
   const auto dynamic = run_summary(dir.path() / "dynamic", "");
-  const auto aligned = run_summary(dir.path() / "static", " --set network.ns3.arp=static");
+  const auto aligned = run_summary(dir.path() / "static", " --set network.arp=static");
   ASSERT_FALSE(dynamic.empty());
   ASSERT_FALSE(aligned.empty());
   EXPECT_GT(dynamic["mac"]["arp_requests"].get<int>(), 0);
@@ -178,8 +178,6 @@ TEST(Ns3Engine, WhatNs3CannotRunIsRefusedBeforeTheRunWithWhereAndWhy) {
       {"output.packet_trace=true", "--set output.packet_trace",
        "the ns-3 engine writes no packet trace"},
       {"network.engine=native --set network.ns3.standard=80211g", "--set network.ns3.standard",
-       "applies only to the ns-3 engine"},
-      {"network.engine=native --set network.ns3.arp=static", "--set network.ns3.arp",
        "applies only to the ns-3 engine"},
       {"network.ns3.standard=80211g --set network.mac.params.cw_min=31",
        "--set network.mac.params.cw_min", "802.11g in ns-3 has its own cw_min"},

@@ -53,15 +53,16 @@ TEST(NetworkSimulator, ReportHasEveryKeyWithZerosIncluded) {
   const NetworkSettings settings = test::make_settings(loader, 2);
   const NetworkSimulator simulator(settings, loader, nullptr);
   const auto report = network_report_json(simulator.report());
-  const char* keys[] = {"packets", "pdr", "delay_s", "hops_mean", "mac", "routing", "events"};
+  const char* keys[] = {"packets", "pdr",     "delay_s", "hops_mean",
+                        "mac",     "routing", "arp",     "events"};
   std::size_t i = 0;
   for (const auto& [key, value] : report.items()) {
     ASSERT_LT(i, std::size(keys));
     EXPECT_EQ(key, keys[i++]);
   }
   EXPECT_EQ(i, std::size(keys));
-  for (const char* reason :
-       {"no_route", "queue_full", "ttl_expired", "retry_limit", "buffer_timeout"}) {
+  for (const char* reason : {"no_route", "queue_full", "ttl_expired", "retry_limit",
+                             "buffer_timeout", "arp_queue_full", "arp_unresolved"}) {
     EXPECT_EQ(report["packets"]["dropped"][reason], 0) << reason;
   }
   for (const char* key :
@@ -73,6 +74,10 @@ TEST(NetworkSimulator, ReportHasEveryKeyWithZerosIncluded) {
   }
   for (const char* key : {"control_packets", "control_bytes", "data_forwards"}) {
     EXPECT_EQ(report["routing"][key], 0) << key;
+  }
+  for (const char* key : {"requests_sent", "replies_sent", "resolved", "failed", "replies_ignored",
+                          "frames_dropped"}) {
+    EXPECT_EQ(report["arp"][key], 0) << key;
   }
   EXPECT_EQ(report["pdr"].get<double>(), 0.0);
   EXPECT_TRUE(report["delay_s"]["p95"].is_null());

@@ -93,7 +93,7 @@ TEST(Ns3Settings, IpRoutingFloodingAndArp) {
   NetworkSettings s = paper_settings();
   s.network.routing = choice("direct", PluginKind::routing, ParamSet());
   s.network.ns3.ip_routing = "olsr";
-  s.network.ns3.arp = "static";
+  s.network.arp.reset();
   const ns3engine::Config olsr = ns3_config_for(s);
   EXPECT_EQ(olsr.routing, ns3engine::Routing::olsr);
   EXPECT_EQ(value_of(olsr.routing_attributes, "HelloInterval"), "2000000000ns");
@@ -112,11 +112,11 @@ TEST(Ns3Settings, IpRoutingFloodingAndArp) {
 
 TEST(Ns3Settings, AodvsLayerTwoFeedbackFollowsTheArpEntries) {
   NetworkSettings s = paper_settings();
-  s.network.ns3.arp = "static";
+  s.network.arp.reset();
   EXPECT_EQ(ns3_config_for(s).arp, ns3engine::Arp::static_with_feedback);
   s.network.routing.params.set("link_layer_feedback", false);
   EXPECT_EQ(ns3_config_for(s).arp, ns3engine::Arp::static_no_feedback);
-  s.network.ns3.arp = "dynamic";
+  s.network.arp = ArpTimings{};
   EXPECT_THROW((void)ns3_config_for(s), std::invalid_argument) << "ARP always gives feedback";
 }
 

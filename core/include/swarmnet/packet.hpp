@@ -19,6 +19,16 @@ inline constexpr std::uint32_t kNetworkHeaderBytes = 28;
 
 inline constexpr std::uint64_t kNoMessage = std::numeric_limits<std::uint64_t>::max();
 
+// What a frame's MSDU is to the link layer. ARP packets are the kernel's own (network/arp.hpp):
+// a MAC sends them like any packet, routing never sees them. An ARP packet carries no header or
+// payload bytes, so its size is the 28 bytes of an ARP header for Ethernet and IPv4, which
+// equals kNetworkHeaderBytes.
+enum class LinkProtocol : std::uint8_t {
+  ipv4,         // an IP packet: application data or a routing protocol's control packet
+  arp_request,  // broadcast: who has `destination`? tell `source`
+  arp_reply,    // unicast to the requester: `source` is here
+};
+
 using Payload = std::vector<std::byte>;
 
 struct Packet {
@@ -30,11 +40,13 @@ struct Packet {
   // The controller port the message is for (swarmnet/controller.hpp). Carried beside the bytes,
   // not in them: it adds nothing to a frame's size. Routing copies it with the packet.
   std::uint16_t port = 0;
-  std::uint32_t hops = 0;            // links traversed so far; the kernel counts them on reception
-  std::vector<std::uint8_t> header;  // the routing protocol's own header, serialised by it
+  std::uint32_t hops = 0;  // links traversed so far; the kernel counts them on reception
+  LinkProtocol protocol = LinkProtocol::ipv4;
+  std::vector<std::uint8_t> header;        // the routing protocol's own header, serialised by it
   std::shared_ptr<const Payload> payload;  // application bytes (null for control packets)
 
   [[nodiscard]] bool is_control() const { return message_id == kNoMessage; }
+  [[nodiscard]] bool is_arp() const { return protocol != LinkProtocol::ipv4; }
   [[nodiscard]] std::uint32_t payload_bytes() const {
     return payload ? static_cast<std::uint32_t>(payload->size()) : 0U;
   }
@@ -69,6 +81,8 @@ enum class DropReason : std::uint8_t {
   ttl_expired,     // hop limit reached
   retry_limit,     // the MAC gave up after its retries
   buffer_timeout,  // waited too long for a route
+  arp_queue_full,  // ARP's pending queue for the next hop was full (network/arp.hpp)
+  arp_unresolved,  // the next hop answered no ARP request
 };
 
 inline const char* to_string(DropReason reason) {
@@ -83,6 +97,10 @@ inline const char* to_string(DropReason reason) {
       return "retry_limit";
     case DropReason::buffer_timeout:
       return "buffer_timeout";
+    case DropReason::arp_queue_full:
+      return "arp_queue_full";
+    case DropReason::arp_unresolved:
+      return "arp_unresolved";
   }
   return "?";
 }

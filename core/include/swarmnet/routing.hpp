@@ -20,6 +20,10 @@ class RoutingContext : public NodeContext {
   virtual void drop(const Packet& packet, DropReason reason) = 0;
   // Records that this node relays `packet` (packet trace "forward" event).
   virtual void trace_forward(const Packet& packet) = 0;
+  // Whether this node's ARP cache holds a usable link-layer address for `neighbor` now (an
+  // alive, unexpired entry; always true with network.arp: static). ns-3's AODV can match a MAC's
+  // failure report to a neighbour only through such an entry (aodv-neighbor's LookupMacAddress).
+  [[nodiscard]] virtual bool link_address_known(NodeId neighbor) const = 0;
 
  protected:
   ~RoutingContext() = default;

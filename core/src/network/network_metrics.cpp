@@ -8,11 +8,14 @@ namespace swarmnet {
 
 namespace {
 
-constexpr std::array kDropReasons = {DropReason::no_route, DropReason::queue_full,
-                                     DropReason::ttl_expired, DropReason::retry_limit,
-                                     DropReason::buffer_timeout};
+constexpr std::array kDropReasons = {DropReason::no_route,       DropReason::queue_full,
+                                     DropReason::ttl_expired,    DropReason::retry_limit,
+                                     DropReason::buffer_timeout, DropReason::arp_queue_full,
+                                     DropReason::arp_unresolved};
 
 constexpr std::array<const char*, 4> kMacKeys = {"tx_frames", "tx_bytes", "collisions", "retries"};
+constexpr std::array<const char*, 6> kArpKeys = {
+    "requests_sent", "replies_sent", "resolved", "failed", "replies_ignored", "frames_dropped"};
 constexpr std::array<const char*, 3> kRoutingKeys = {"control_packets", "control_bytes",
                                                      "data_forwards"};
 
@@ -86,6 +89,10 @@ void NetworkMetrics::routing_count(std::string_view counter, std::uint64_t amoun
   add(routing_, counter, amount);
 }
 
+void NetworkMetrics::arp_count(std::string_view counter, std::uint64_t amount) {
+  add(arp_, counter, amount);
+}
+
 void NetworkMetrics::add(CounterMap& counters, std::string_view counter, std::uint64_t amount) {
   if (auto it = counters.find(counter); it != counters.end()) {
     it->second += amount;
@@ -125,6 +132,7 @@ NetworkReport NetworkMetrics::report(std::uint64_t in_flight, std::uint64_t even
   CounterMap routing = routing_;
   routing["data_forwards"] += data_forwards_;
   out.routing = ordered_counters(kRoutingKeys, routing);
+  out.arp = ordered_counters(kArpKeys, arp_);
   out.events = events;
   return out;
 }

@@ -23,6 +23,13 @@
 //   routing.*                     control_packets and control_bytes (every control packet handed
 //                                 to a MAC, originated or relayed), data_forwards (trace_forward()
 //                                 of data packets) and every counter routing reported via count()
+//   arp.*                         network.arp: ns3 (network/arp.hpp): requests_sent (first requests
+//                                 and retries) and replies_sent (frames handed to the MAC),
+//                                 resolved (entries that became alive), failed (entries that died
+//                                 after the last retry), replies_ignored (replies no request of
+//                                 the node waited for), frames_dropped (ARP frames its MAC
+//                                 discarded); all 0 with network.arp: static. Packets ARP drops
+//                                 are in packets.dropped.arp_queue_full and .arp_unresolved.
 //   events                        discrete events run
 #pragma once
 
@@ -54,6 +61,7 @@ class NetworkMetrics {
   void data_forwarded() { ++data_forwards_; }
   void mac_count(std::string_view counter, std::uint64_t amount);
   void routing_count(std::string_view counter, std::uint64_t amount);
+  void arp_count(std::string_view counter, std::uint64_t amount);
 
   [[nodiscard]] std::uint64_t sent() const { return sent_; }
   [[nodiscard]] std::uint64_t unicast_sent() const { return sent_ - broadcast_sent_; }
@@ -77,6 +85,7 @@ class NetworkMetrics {
   std::uint64_t data_forwards_ = 0;
   CounterMap mac_;      // starts with tx_frames, tx_bytes, collisions, retries
   CounterMap routing_;  // starts with control_packets, control_bytes
+  CounterMap arp_;
 };
 
 }  // namespace swarmnet

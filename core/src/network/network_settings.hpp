@@ -3,12 +3,15 @@
 // benchmarks build them by hand.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "plugin/plugin_choice.hpp"
 #include "swarmnet/arena.hpp"
+#include "swarmnet/units.hpp"
 
 namespace swarmnet {
 
@@ -48,11 +51,22 @@ struct Ns3Options {
   std::string control_mode;  // constant: WifiMode of control frames; empty: from the MAC's rate
   std::string ip_routing = "none";        // under the `direct` plugin: none (one hop), olsr, dsdv
   std::string error_rate_model = "nist";  // nist (SwarmNet's sinr model), table, yans
-  std::string arp = "dynamic";  // dynamic (ns-3's ARP) or static (entries filled before the run)
   double olsr_hello_interval_s = 2.0;
   double olsr_tc_interval_s = 5.0;
   double dsdv_periodic_update_interval_s = 15.0;
   double dsdv_settling_time_s = 5.0;
+};
+
+// ns-3.37's defaults (ArpCache's attributes and ArpL3Protocol's RequestJitter).
+struct ArpTimings {
+  SimTime alive_timeout = from_seconds(120.0);     // an alive entry needs refreshing after this
+  SimTime dead_timeout = from_seconds(100.0);      // a dead entry is retried after this
+  SimTime wait_reply_timeout = from_seconds(1.0);  // period of the cache's wait-reply timer
+  std::uint32_t max_retries = 3;                   // requests re-sent before an entry dies
+  std::size_t pending_queue_size = 3;              // packets held per entry awaiting a reply
+  // A request waits a uniform draw in [0, request_jitter_max_ms) milliseconds, truncated to a
+  // whole millisecond (ns-3 converts the draw with MilliSeconds(uint64_t)).
+  double request_jitter_max_ms = 10.0;
 };
 
 struct ChannelConfig {
@@ -66,6 +80,9 @@ struct NetworkConfig {
   ChannelConfig channel;
   PluginChoice mac;
   PluginChoice routing;
+  // network.arp: ns3 runs ARP with these timings (network/arp.hpp); static (nullopt) fills every
+  // neighbour's address before the run and sends no ARP frame.
+  std::optional<ArpTimings> arp = ArpTimings{};
   NetworkEngineKind engine = NetworkEngineKind::native;
   Ns3Options ns3;
 };

@@ -47,7 +47,8 @@ NetworkSimulator::NetworkSimulator(const NetworkSettings& settings, PluginLoader
                               trace_,
                               metrics_,
                               packet_uids_,
-                              derive_seed(settings.seed, {hash_name("phy")})};
+                              derive_seed(settings.seed, {hash_name("phy")}),
+                              derive_seed(settings.seed, {hash_name("arp")})};
   PluginChoice mac = settings.network.mac;
   PluginChoice routing = settings.network.routing;
   mac.kind = PluginKind::mac;  // the seed keys name the kind, whatever the struct was filled with
@@ -58,7 +59,8 @@ NetworkSimulator::NetworkSimulator(const NetworkSettings& settings, PluginLoader
     auto routing_instance =
         loader.create<Routing>(routing.name, node_plugin_args(settings, routing, id));
     nodes_.push_back(std::make_unique<Node>(id, services, settings.network.phy,
-                                            std::move(mac_instance), std::move(routing_instance)));
+                                            settings.network.arp, std::move(mac_instance),
+                                            std::move(routing_instance)));
     channel_.attach(id, nodes_.back()->phy());
   }
   for (auto& node : nodes_) node->attach();

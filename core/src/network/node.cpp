@@ -7,14 +7,21 @@
 namespace swarmnet {
 
 Node::Node(NodeId id, const NodeServices& services, const PhyConfig& phy_config,
-           PluginInstance<Mac> mac, PluginInstance<Routing> routing)
+           const std::optional<ArpTimings>& arp, PluginInstance<Mac> mac,
+           PluginInstance<Routing> routing)
     : id_(id),
       services_(services),
       phy_(phy_config, *this, &services.scheduler, derive_seed(services.phy_seed, {id})),
       mac_port_(*this),
       routing_port_(*this),
+      arp_link_(*this),
       mac_(std::move(mac)),
-      routing_(std::move(routing)) {}
+      routing_(std::move(routing)) {
+  if (arp) {
+    arp_.emplace(id, *arp, services.scheduler, services.metrics, services.packet_uids,
+                 derive_seed(services.arp_seed, {id}), arp_link_);
+  }
+}
 
 void Node::attach() {
   mac_->attach(mac_port_);
@@ -47,6 +54,11 @@ void Node::MacPort::transmit(Frame frame, SimTime duration) {
 bool Node::MacPort::medium_busy() const { return node_.phy_.medium_busy(); }
 
 void Node::MacPort::deliver(Packet packet, NodeId from) {
+  if (packet.is_arp()) {
+    // Only a node that runs ARP sends ARP frames, and then every node does.
+    if (node_.arp_) node_.arp_->receive(packet);
+    return;
+  }
   ++packet.hops;
   node_.routing_->receive(std::move(packet), from);
 }
@@ -55,7 +67,13 @@ void Node::MacPort::link_failed(const Packet& packet, NodeId next_hop) {
   node_.routing_->link_failed(packet, next_hop);
 }
 
-void Node::MacPort::drop(const Packet& packet, DropReason reason) { node_.drop(packet, reason); }
+void Node::MacPort::drop(const Packet& packet, DropReason reason) {
+  if (packet.is_arp()) {  // not an IP packet: counted as ARP's, not among packets.dropped
+    node_.services_.metrics.arp_count("frames_dropped", 1);
+    return;
+  }
+  node_.drop(packet, reason);
+}
 
 // ---- RoutingPort ------------------------------------------------------------------------------
 
@@ -75,6 +93,20 @@ Packet Node::RoutingPort::make_control_packet(NodeId destination) {
 
 void Node::RoutingPort::send_to_mac(Packet packet, NodeId next_hop) {
   if (packet.is_control()) node_.services_.metrics.control_packet_sent(packet.size_bytes());
+  if (node_.arp_ && next_hop != kBroadcast) {
+    node_.arp_->send(std::move(packet), next_hop);
+    return;
+  }
+  node_.mac_->enqueue(std::move(packet), next_hop);
+}
+
+bool Node::RoutingPort::link_address_known(NodeId neighbor) const {
+  return !node_.arp_ || node_.arp_->resolved(neighbor);
+}
+
+// ---- ArpLink ----------------------------------------------------------------------------------
+
+void Node::ArpLink::send_to_mac(Packet packet, NodeId next_hop) {
   node_.mac_->enqueue(std::move(packet), next_hop);
 }
 

@@ -5,7 +5,8 @@
 //   routing.send_to_mac()   -> mac.enqueue()          (control packets counted here)
 //   mac.transmit()          -> channel                (mac.tx_frames / tx_bytes counted here)
 //   phy reception           -> mac.on_receive()
-//   mac.deliver()           -> packet.hops + 1, then routing.receive()
+//   routing.send_to_mac()   -> ARP (network.arp: ns3) for a unicast next hop, then mac.enqueue()
+//   mac.deliver()           -> ARP packets to ARP; others: packet.hops + 1, then routing.receive()
 //   routing.deliver()       -> application layer
 //   drop() from either      -> packet trace "drop" and packets.dropped.<reason>
 //   count() from either     -> mac.<counter> or routing.<counter> in the report
@@ -13,10 +14,12 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string_view>
 #include <utility>
 
 #include "network/application_layer.hpp"
+#include "network/arp.hpp"
 #include "network/channel.hpp"
 #include "network/network_metrics.hpp"
 #include "network/packet_trace.hpp"
@@ -38,12 +41,15 @@ struct NodeServices {
   NetworkMetrics& metrics;
   PacketUidSource& packet_uids;
   std::uint64_t phy_seed = 0;  // node i's PHY draws from derive_seed(phy_seed, {i})
+  std::uint64_t arp_seed = 0;  // node i's ARP jitter draws from derive_seed(arp_seed, {i})
 };
 
 class Node final : private PhyListener {
  public:
+  // `arp`: ARP's timings, or nullopt for static entries (every address known, no ARP frame).
   Node(NodeId id, const NodeServices& services, const PhyConfig& phy_config,
-       PluginInstance<Mac> mac, PluginInstance<Routing> routing);
+       const std::optional<ArpTimings>& arp, PluginInstance<Mac> mac,
+       PluginInstance<Routing> routing);
   Node(const Node&) = delete;
   Node& operator=(const Node&) = delete;
   Node(Node&&) = delete;
@@ -102,6 +108,18 @@ class Node final : private PhyListener {
     void deliver(const Packet& packet) override;
     void drop(const Packet& packet, DropReason reason) override;
     void trace_forward(const Packet& packet) override;
+    [[nodiscard]] bool link_address_known(NodeId neighbor) const override;
+  };
+
+  // ARP's way down to the MAC and to the node's drop accounting.
+  class ArpLink final : public Arp::Link {
+   public:
+    explicit ArpLink(Node& node) : node_(node) {}
+    void send_to_mac(Packet packet, NodeId next_hop) override;
+    void drop(const Packet& packet, DropReason reason) override { node_.drop(packet, reason); }
+
+   private:
+    Node& node_;
   };
 
   void drop(const Packet& packet, DropReason reason);
@@ -121,6 +139,8 @@ class Node final : private PhyListener {
   Phy phy_;
   MacPort mac_port_;
   RoutingPort routing_port_;
+  ArpLink arp_link_;
+  std::optional<Arp> arp_;  // empty with static ARP
   // Declared last: destroyed first, while the ports they may still call are alive.
   PluginInstance<Mac> mac_;
   PluginInstance<Routing> routing_;

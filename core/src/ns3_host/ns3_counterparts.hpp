@@ -113,7 +113,7 @@ inline constexpr std::array<Ns3ParamAttribute, 25> kAodv{{
     {"gratuitous_reply", "GratuitousReply", boolean},
     {"enable_hello", "EnableHello", boolean},
     {"enable_broadcast", "EnableBroadcast", boolean},
-    {"link_layer_feedback", "", special},  // with network.ns3.arp (ns3_settings.cpp)
+    {"link_layer_feedback", "", special},  // with network.arp (ns3_settings.cpp)
 }};
 inline constexpr std::array<Ns3ParamAttribute, 3> kFlooding{{
     {"ttl", "", special, Ns3Target::application},

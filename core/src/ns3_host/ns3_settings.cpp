@@ -115,10 +115,10 @@ const char* error_rate_model_type(const std::string& name) {
 ns3engine::Arp arp_mode(const NetworkSettings& settings) {
   const PluginChoice& routing = settings.network.routing;
   const bool feedback = routing.name == "aodv" && routing.params.boolean("link_layer_feedback");
-  if (settings.network.ns3.arp == "dynamic") {
+  if (settings.network.arp) {
     if (routing.name == "aodv" && !feedback) {
       throw std::invalid_argument(
-          "aodv link_layer_feedback: false needs network.ns3.arp: static (ns-3's AODV takes "
+          "aodv link_layer_feedback: false needs network.arp: static (ns-3's AODV takes "
           "layer-2 feedback whenever ARP resolved the neighbour)");
     }
     return ns3engine::Arp::dynamic;

@@ -63,6 +63,7 @@ Json network_report_json(const NetworkReport& report) {
   summary["hops_mean"] = optional_json(report.hops_mean);
   summary["mac"] = counts_json(report.mac);
   summary["routing"] = counts_json(report.routing);
+  summary["arp"] = counts_json(report.arp);
   summary["events"] = report.events;
   return summary;
 }

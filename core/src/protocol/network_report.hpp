@@ -33,6 +33,7 @@ struct NetworkReport {
   std::optional<double> hops_mean;
   std::vector<NamedCount> mac;      // in the summary's order
   std::vector<NamedCount> routing;  // in the summary's order
+  std::vector<NamedCount> arp;      // in the summary's order
   std::uint64_t events = 0;
   // CPU the network half spent simulating and on the transport; filled by the half, not the
   // simulator, and zero in a replay's report.

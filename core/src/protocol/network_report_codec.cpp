@@ -28,6 +28,7 @@ void report_fields(const NetworkReport& r, Sink& sink) {
   optional(r.hops_mean);
   counts(r.mac);
   counts(r.routing);
+  counts(r.arp);
   sink.put(r.events).put(r.network_cpu_s).put(r.transport_cpu_s);
 }
 
@@ -84,8 +85,9 @@ bool decode_report(RecordReader& reader, NetworkReport& r) {
          reader.get(r.in_flight) && reader.get(r.duplicates) && reader.get(r.pdr) &&
          decode_optional(reader, r.delay_mean_s) && decode_optional(reader, r.delay_p50_s) &&
          decode_optional(reader, r.delay_p95_s) && decode_optional(reader, r.hops_mean) &&
-         decode_counts(reader, r.mac) && decode_counts(reader, r.routing) && reader.get(r.events) &&
-         reader.get(r.network_cpu_s) && reader.get(r.transport_cpu_s) && reader.at_end();
+         decode_counts(reader, r.mac) && decode_counts(reader, r.routing) &&
+         decode_counts(reader, r.arp) && reader.get(r.events) && reader.get(r.network_cpu_s) &&
+         reader.get(r.transport_cpu_s) && reader.at_end();
 }
 
 }  // namespace swarmnet

@@ -47,7 +47,7 @@ struct ProtocolLimits {
 inline constexpr std::uint32_t kMaxRobots = 100000;
 
 // Version of the records above; both halves must speak the same one.
-inline constexpr std::uint32_t kStepProtocolVersion = 3;
+inline constexpr std::uint32_t kStepProtocolVersion = 4;  // 4: the report's arp counters
 
 // The handshake (the study's Fig. 1). The robot half's hello carries exactly one description of
 // what to simulate, the resolved scenario; the network half validates it and answers with a

@@ -245,11 +245,11 @@ void check_routing(KeyFacts& keys) {
   const Ns3Counterpart* counterpart = check_plugin(keys, routing, kNs3Routing, "routing");
   const KeyPath feedback = routing / "params" / "link_layer_feedback";
   if (counterpart != nullptr && counterpart->plugin == "aodv" && keys.text(feedback) == "false" &&
-      keys.text(KeyPath({"network", "ns3", "arp"})) != "static") {
+      keys.text(KeyPath({"network", "arp"})) != "static") {
     keys.refuse(feedback,
                 "ns-3's AODV takes layer-2 feedback whenever ARP resolved the neighbour; without "
                 "it needs the neighbours' entries filled in before the run",
-                "network.ns3.arp: static with link_layer_feedback: false");
+                "network.arp: static with link_layer_feedback: false");
   }
   const KeyPath ip_routing({"network", "ns3", "ip_routing"});
   const std::string ip = keys.text(ip_routing);
@@ -289,7 +289,6 @@ void check_network_engine(YAML::Node& tree, const ScenarioChecker& checker, Prob
         {"control_mode", !keys.text(ns3 / "control_mode").empty()},
         {"ip_routing", keys.text(ns3 / "ip_routing") != defaults.ip_routing},
         {"error_rate_model", keys.text(ns3 / "error_rate_model") != defaults.error_rate_model},
-        {"arp", keys.text(ns3 / "arp") != defaults.arp},
         {"olsr_hello_interval_s",
          keys.real_differs(ns3 / "olsr_hello_interval_s", defaults.olsr_hello_interval_s)},
         {"olsr_tc_interval_s",

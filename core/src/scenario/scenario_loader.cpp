@@ -149,6 +149,7 @@ Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>
   s.network.channel.cutoff = network["channel"]["cutoff"].as<bool>();
   s.network.mac = plugin("network.mac");
   s.network.routing = plugin("network.routing");
+  if (network["arp"].as<std::string>() == "static") s.network.arp.reset();
   s.network.engine = network["engine"].as<std::string>() == "ns3" ? NetworkEngineKind::ns3
                                                                   : NetworkEngineKind::native;
   const YAML::Node ns3 = network["ns3"];
@@ -158,7 +159,6 @@ Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>
   if (ns3["control_mode"]) s.network.ns3.control_mode = ns3["control_mode"].as<std::string>();
   s.network.ns3.ip_routing = ns3["ip_routing"].as<std::string>();
   s.network.ns3.error_rate_model = ns3["error_rate_model"].as<std::string>();
-  s.network.ns3.arp = ns3["arp"].as<std::string>();
   s.network.ns3.olsr_hello_interval_s = ns3["olsr_hello_interval_s"].as<double>();
   s.network.ns3.olsr_tc_interval_s = ns3["olsr_tc_interval_s"].as<double>();
   s.network.ns3.dsdv_periodic_update_interval_s =

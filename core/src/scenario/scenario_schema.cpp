@@ -227,6 +227,12 @@ const KeySpec& scenario_schema() {
       }),
       plugin_key("mac", PluginKind::mac, "Medium access control.").plugin_default("ideal_mac"),
       plugin_key("routing", PluginKind::routing, "Routing protocol.").need(),
+      choice_key("arp", {"ns3", "static"},
+                 "ns3: ARP as ns-3.37 runs it (a broadcast request, a unicast reply, 3 packets "
+                 "held per unresolved neighbour, 3 retries a second apart, entries alive 120 s; "
+                 "docs/arp.md); static: every neighbour's address known before the run, no ARP "
+                 "frame (the aligned setup of docs/validation.md).")
+          .defaults("ns3"),
       choice_key("engine", {"native", "ns3"},
                  "Which simulator is the network half: SwarmNet's own (native) or ns-3.37 "
                  "(ns3: every key above mapped onto ns-3's models, docs/ns3-engine.md).")
@@ -245,10 +251,6 @@ const KeySpec& scenario_schema() {
         choice_key("error_rate_model", {"nist", "table", "yans"},
                    "Frame error rates from SINR: nist (what SwarmNet's sinr PHY implements), "
                    "table (ns-3.37's default) or yans.").defaults("nist"),
-        choice_key("arp", {"dynamic", "static"},
-                   "dynamic: ns-3's ARP (requests, replies, a pending queue of 3); static: every "
-                   "neighbour's entry filled before the run, no ARP frame (the aligned setup of "
-                   "docs/validation.md).").defaults("dynamic"),
         choice_key("ip_routing", {"none", "olsr", "dsdv"},
                    "IP routing under network.routing `direct`: none (one hop), or ns-3's OLSR or "
                    "DSDV finding multi-hop routes.").defaults("none"),

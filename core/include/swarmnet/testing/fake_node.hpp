@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <map>
+#include <set>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -88,6 +89,10 @@ class FakeRoutingContext final : public FakeNode<RoutingContext> {
     dropped.push_back({packet, reason});
   }
   void trace_forward(const Packet& packet) override { forwarded.push_back(packet); }
+  [[nodiscard]] bool link_address_known(NodeId neighbor) const override {
+    return unresolved.count(neighbor) == 0;
+  }
+  std::set<NodeId> unresolved;  // neighbours link_address_known() denies (default: none)
 };
 
 // What a MAC plugin sees of its node and PHY. The test sets `busy` and calls the MAC's
