@@ -153,5 +153,22 @@ TEST(DcfInterfaceQueue, BoundedFifoWithExpiry) {
   EXPECT_TRUE(queue.empty());
 }
 
+// ns-3's WifiMacQueue::Insert on a full queue removes the expired packets first.
+TEST(DcfInterfaceQueue, TakesTheExpiredPacketsFromItsHead) {
+  InterfaceQueue queue(3, us(1000));
+  for (std::uint64_t uid = 1; uid <= 3; ++uid) {
+    Packet p;
+    p.uid = uid;
+    EXPECT_TRUE(queue.push(p, static_cast<NodeId>(uid), us(400 * static_cast<int>(uid - 1))));
+  }
+  EXPECT_TRUE(queue.take_expired(us(1000)).empty());  // waited exactly the maximum: not expired
+  const auto expired = queue.take_expired(us(1500));  // packets 1 and 2 waited 1.5 and 1.1 ms
+  ASSERT_EQ(expired.size(), 2U);
+  EXPECT_EQ(expired[0].packet.uid, 1U);
+  EXPECT_EQ(expired[1].packet.uid, 2U);
+  EXPECT_EQ(expired[1].next_hop, 2U);
+  EXPECT_EQ(queue.size(), 1U);
+}
+
 }  // namespace
 }  // namespace swarmnet::dcf80211

@@ -30,13 +30,21 @@ PluginInfo Dcf80211::info() {
       "rts_threshold_bytes (MPDU bytes) are preceded by RTS/CTS (CTS timeout likewise). "
       "Failed RTS and data sent without RTS count against short_retry_limit, data after a CTS "
       "against long_retry_limit (attempts, as ns-3's MaxSsrc/MaxSlrc); at the limit the packet "
-      "is dropped (retry_limit) and routing is told (link_failed). Broadcasts are sent once, "
-      "without RTS or ACK. Duplicates (retries of an already received sequence number) are "
-      "acknowledged but not delivered twice.\n"
-      "Queue: a FIFO of queue_limit packets (the packet being sent excluded); a packet arriving "
-      "at a full queue is dropped (queue_full), and one that waited longer than "
-      "queue_max_delay_s is dropped when it reaches the head (buffer_timeout), like ns-3's "
-      "WifiMacQueue (500 packets, 500 ms).\n"
+      "is dropped (retry_limit). Broadcasts are sent once, without RTS or ACK. Duplicates "
+      "(retries of an already received sequence number) are acknowledged but not delivered "
+      "twice.\n"
+      "Queue: a FIFO of queue_limit packets (the packet being sent excluded); a packet that "
+      "waited longer than queue_max_delay_s is dropped when it reaches the head "
+      "(buffer_timeout), and a packet arriving at a full queue first has the expired packets "
+      "removed (buffer_timeout), then is dropped (queue_full) if the queue is still full, like "
+      "ns-3's WifiMacQueue (500 packets, 500 ms).\n"
+      "Link feedback: routing hears of a dropped unicast packet through link_failed(packet, "
+      "next_hop) (\"the MAC dropped a unicast MPDU to next_hop\"), ARP packets included. With "
+      "link_failure_reports: every_drop (the default) every such drop is reported, at the retry "
+      "limit, at a full queue and at an expired wait, as ns-3.37's WifiMac DroppedMpdu trace "
+      "(which ns-3's AODV listens to) fires for all three; retry_limit reports only the retry "
+      "limit (SwarmNet's rule before, an unacknowledged frame only). Broadcast drops are never "
+      "reported.\n"
       "Frames: data frames carry header_bytes (MAC header 24 + FCS 4 + LLC/SNAP 8 = 36, as ns-3) "
       "above the packet; ACK and CTS are 14 bytes, RTS 20, sent at control_rate_bps.\n"
       "Counters: retries, ack_timeouts, cts_timeouts, rts, cts, acks (frames sent), duplicates; "
@@ -59,6 +67,11 @@ PluginInfo Dcf80211::info() {
                         65535),
           integer_param("queue_limit", 500, "packets", "interface queue capacity", 1, 10000000),
           real_param("queue_max_delay_s", 0.5, "s", "longest wait in the queue", 0.0, 1.0e9),
+          text_param("link_failure_reports", "every_drop",
+                     "which drops of a unicast packet routing hears of (link_failed): every_drop "
+                     "(retry limit, full queue, expired wait: ns-3's DroppedMpdu) or retry_limit "
+                     "(only after the retries)",
+                     {"every_drop", "retry_limit"}),
           integer_param("header_bytes", 36, "B",
                         "bytes a data frame adds to the packet (MAC header, FCS, LLC/SNAP)", 0,
                         65535),
@@ -77,7 +90,8 @@ Dcf80211::Dcf80211(const PluginArgs& args)
       header_bytes_(static_cast<std::uint32_t>(args.params.integer("header_bytes"))),
       rts_threshold_bytes_(static_cast<std::uint32_t>(args.params.integer("rts_threshold_bytes"))),
       short_retry_limit_(static_cast<std::uint32_t>(args.params.integer("short_retry_limit"))),
-      long_retry_limit_(static_cast<std::uint32_t>(args.params.integer("long_retry_limit"))) {}
+      long_retry_limit_(static_cast<std::uint32_t>(args.params.integer("long_retry_limit"))),
+      report_every_drop_(args.params.text("link_failure_reports") == "every_drop") {}
 
 void Dcf80211::attach(MacContext& context) {
   context_ = &context;
@@ -86,22 +100,48 @@ void Dcf80211::attach(MacContext& context) {
 
 void Dcf80211::new_backoff() { access_.set_backoff(now(), cw_.draw(random_)); }
 
+void Dcf80211::drop_mpdu(const Packet& packet, NodeId next_hop, DropReason reason) {
+  context_->drop(packet, reason);
+  if (next_hop == kBroadcast) return;
+  if (report_every_drop_ || reason == DropReason::retry_limit) {
+    context_->link_failed(packet, next_hop);
+  }
+}
+
+void Dcf80211::drop_expired(const std::vector<InterfaceQueue::Item>& expired) {
+  for (const InterfaceQueue::Item& item : expired) {
+    drop_mpdu(item.packet, item.next_hop, DropReason::buffer_timeout);
+  }
+}
+
+// Reports to routing may come back at once as new packets (a RERR): the queue's reports are made
+// once the MAC's own state is settled.
 void Dcf80211::enqueue(Packet packet, NodeId next_hop) {
+  std::vector<InterfaceQueue::Item> expired;
   if (queue_.full()) {
-    context_->drop(packet, DropReason::queue_full);
-    return;
+    // ns-3's WifiMacQueue::Insert: a full queue first drops its expired packets.
+    expired = queue_.take_expired(now());
+    if (queue_.full()) {
+      drop_expired(expired);
+      drop_mpdu(packet, next_hop, DropReason::queue_full);
+      return;
+    }
   }
   const bool idle_station = queue_.empty() && !exchange_;
   queue_.push(std::move(packet), next_hop, now());
   if (idle_station) start_exchange_if_needed(true);
+  drop_expired(expired);
 }
 
 void Dcf80211::start_exchange_if_needed(bool fresh_arrival) {
   if (exchange_) return;
-  auto item = queue_.pop(now(), [this](const InterfaceQueue::Item& expired) {
-    context_->drop(expired.packet, DropReason::buffer_timeout);
-  });
-  if (!item) return;
+  std::vector<InterfaceQueue::Item> expired;
+  auto item =
+      queue_.pop(now(), [&expired](const InterfaceQueue::Item& old) { expired.push_back(old); });
+  if (!item) {
+    drop_expired(expired);
+    return;
+  }
   const std::uint32_t mpdu_bytes = header_bytes_ + item->packet.size_bytes();
   const bool use_rts = item->next_hop != kBroadcast && mpdu_bytes > rts_threshold_bytes_;
   exchange_ = Exchange{std::move(item->packet), item->next_hop, next_sequence_++, use_rts};
@@ -118,6 +158,7 @@ void Dcf80211::start_exchange_if_needed(bool fresh_arrival) {
   }
   access_requested_ = true;
   schedule_access();
+  drop_expired(expired);
 }
 
 void Dcf80211::schedule_access() {
@@ -218,10 +259,11 @@ void Dcf80211::exchange_failed() {
     give_up = ++exchange_->short_retries >= short_retry_limit_;
   }
   if (give_up) {
+    // Routing hears of it while the exchange still stands, so that a packet it sends at once
+    // (a RERR) queues behind the ones waiting.
     const Packet packet = exchange_->packet;
     const NodeId next_hop = exchange_->next_hop;
-    context_->drop(packet, DropReason::retry_limit);
-    context_->link_failed(packet, next_hop);
+    drop_mpdu(packet, next_hop, DropReason::retry_limit);
     exchange_finished();
     return;
   }

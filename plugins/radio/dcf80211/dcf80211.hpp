@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <vector>
 
 #include "channel_access.hpp"
 #include "contention_window.hpp"
@@ -58,6 +59,10 @@ class Dcf80211 final : public Mac {
   void exchange_failed();
   void exchange_finished();
   void new_backoff();
+  // Discards `packet` (to `next_hop`) for `reason` and, for a unicast packet, tells routing as
+  // link_failure_reports says (ns-3's DroppedMpdu: every drop; or at the retry limit only).
+  void drop_mpdu(const Packet& packet, NodeId next_hop, DropReason reason);
+  void drop_expired(const std::vector<InterfaceQueue::Item>& expired);
   [[nodiscard]] SimTime now() const { return context_->now(); }
 
   MacContext* context_ = nullptr;
@@ -70,6 +75,7 @@ class Dcf80211 final : public Mac {
   std::uint32_t rts_threshold_bytes_;
   std::uint32_t short_retry_limit_;
   std::uint32_t long_retry_limit_;
+  bool report_every_drop_;  // link_failure_reports: every_drop (ns-3) or retry_limit
 
   std::optional<Exchange> exchange_;
   bool access_requested_ = false;

@@ -24,4 +24,13 @@ std::optional<InterfaceQueue::Item> InterfaceQueue::pop(
   return std::nullopt;
 }
 
+std::vector<InterfaceQueue::Item> InterfaceQueue::take_expired(SimTime now) {
+  std::vector<Item> expired;
+  while (!items_.empty() && now - items_.front().enqueued_at > max_delay_) {
+    expired.push_back(std::move(items_.front()));
+    items_.pop_front();
+  }
+  return expired;
+}
+
 }  // namespace swarmnet::dcf80211

@@ -6,6 +6,7 @@
 #include <deque>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "swarmnet/packet.hpp"
 
@@ -26,6 +27,10 @@ class InterfaceQueue {
   // The oldest packet that has not waited longer than max_delay; expired ones met on the way are
   // removed and passed to `expired`.
   std::optional<Item> pop(SimTime now, const std::function<void(const Item&)>& expired);
+  // Removes every packet that has waited longer than max_delay (the queue is in arrival order,
+  // so they lead it) and returns them, oldest first. ns-3's WifiMacQueue does this when a packet
+  // arrives at a full queue, before it refuses one.
+  std::vector<Item> take_expired(SimTime now);
 
   [[nodiscard]] std::size_t size() const { return items_.size(); }
   [[nodiscard]] bool empty() const { return items_.empty(); }

@@ -63,12 +63,24 @@ PluginInfo Aodv::info() {
       "every hello_interval_s, TTL 1; only a RREQ sent or relayed in the interval stands in for "
       "one) maintain neighbours, as do RREQs heard and data forwarded or delivered (ns-3: "
       "forwarding keeps both neighbours alive), while every AODV message heard, a duplicate RREQ "
-      "included, makes its sender a one-hop route (ns-3's RecvAodv); allowed_hello_loss missed "
-      "HELLOs or, with "
-      "link_layer_feedback, a MAC's link_failed() report breaks the link: routes through it are "
-      "invalidated with their sequence number incremented (unless increment_seqno_on_break is "
-      "false, ns-3.37's rule), and a RERR goes to the precursors (unicast to a single one, "
-      "broadcast otherwise), which do the same. RREQs and RERRs are rate-limited per second; "
+      "included, makes its sender a one-hop route (ns-3's RecvAodv). A neighbour not heard for "
+      "allowed_hello_loss HELLO intervals (its lifetime; traffic gives active_route_timeout_s) "
+      "expires; as in ns-3's neighbour list, expired neighbours are found at a purge, which "
+      "runs hello_interval_s after the previous one, whenever a new neighbour is recorded and "
+      "at every MAC report (without HELLOs, enable_hello: false, neighbours still come from "
+      "RREQs and traffic and still expire, the first one recorded starting the purges). With "
+      "link_layer_feedback, a MAC's link_failed() report (the MAC dropped a unicast frame to "
+      "that next hop: retry limit, and with dcf80211's default also a full queue or an expired "
+      "wait, ns-3's DroppedMpdu; an ARP packet's drop counts as any other) closes the "
+      "neighbour as ns-3.37 does (link_failure_match: neighbor_address): only if it is in the "
+      "neighbour list with a link-layer address the node's ARP cache had resolved when it was "
+      "recorded or refreshed (kept once known); a report for any other node, or for an "
+      "unresolved neighbour, breaks nothing (link_failure_match: next_hop breaks the link to "
+      "any reported next hop, SwarmNet's rule before ARP). A broken link or an expired "
+      "neighbour invalidates the routes through it with their sequence number incremented "
+      "(unless increment_seqno_on_break is false, ns-3.37's rule), and a RERR goes to the "
+      "precursors (unicast to a single one, broadcast otherwise), which do the same. RREQs and "
+      "RERRs are rate-limited per second; "
       "broadcast control packets wait a random jitter of a whole number of milliseconds up to "
       "broadcast_jitter_max_s drawn from the node's stream (the first HELLO likewise, up to "
       "hello_start_jitter_max_s). A unicast control message goes to its neighbour over a valid "
@@ -78,7 +90,7 @@ PluginInfo Aodv::info() {
       "rrep_ack_required every RREP must be acknowledged with a RREP-ACK within next_hop_wait_s "
       "or the neighbour is blacklisted (its RREQs ignored) for blacklist_timeout_s. Optional "
       "local repair "
-      "(enable_local_repair): a node that loses the next hop of a forwarded packet within "
+      "(enable_local_repair): a node that loses the next hop of a forwarded data packet within "
       "0.3 * net_diameter hops of the destination buffers it and searches once with TTL "
       "max(route hops, hops from source / 2) + local_add_ttl before reporting the break. "
       "Application broadcasts are rebroadcast with duplicate detection while their hop count is "
@@ -87,7 +99,8 @@ PluginInfo Aodv::info() {
       "as no_route (with a RERR to its source). Control messages have their RFC sizes; the "
       "RREQ's reserved byte carries its TTL. Counters (routing.*): control_rreq, control_rrep, "
       "control_rerr, control_rrep_ack, control_hello (transmissions, originated or relayed), "
-      "route_discoveries, link_breaks, blacklisted, local_repairs, duplicates, malformed. "
+      "route_discoveries, link_failures (MAC reports received), link_breaks (breaks that "
+      "invalidated a route), blacklisted, local_repairs, duplicates, malformed. "
       "Departures from ns-3, all from RFC 3561: every route update follows section 6.2 (ns-3 "
       "overwrites reverse routes unconditionally); a destination sets its sequence number to "
       "the maximum of its own and the RREQ's (6.6.1); link breaks increment the sequence numbers "
@@ -110,8 +123,14 @@ void Aodv::attach(RoutingContext& context) {
   if (params_.enable_hello) {
     context_->schedule(whole_ms_up_to(random_, params_.hello_start_jitter_max),
                        [this] { hello_timer_expired(); });
-    context_->schedule(params_.hello_interval, [this] { check_neighbors(); });
+    // ns-3 (Start) arms the neighbour timer only with HELLOs; without them the first neighbour
+    // recorded arms it (purge_neighbors).
+    neighbor_timer_ = context_->schedule(params_.hello_interval, [this] {
+      neighbor_timer_ = kNoTimer;
+      purge_neighbors();
+    });
   }
+  context_->schedule(params_.hello_interval, [this] { housekeeping(); });
 }
 
 // ---- data -------------------------------------------------------------------------------------
@@ -145,7 +164,7 @@ void Aodv::receive(Packet packet, NodeId from) {
       if (const RouteEntry* to_origin = table_.find_valid(packet.source, now())) {
         const NodeId previous_hop = to_origin->next_hop;
         table_.refresh(previous_hop, params_.active_route_timeout, now());
-        neighbors_.update(previous_hop, params_.active_route_timeout, now());
+        update_neighbor(previous_hop, params_.active_route_timeout);
       }
       context_->deliver(packet);
     } else {
@@ -195,13 +214,15 @@ void Aodv::forward_data(Packet packet) {
     const RouteEntry to_destination = *route;
     // RFC 3561 6.2: using a route keeps it, its next hop, the source and the previous hop alive.
     table_.refresh(packet.source, params_.active_route_timeout, t);
+    const RouteEntry* to_origin = table_.find(packet.source, t);
+    const NodeId previous_hop = to_origin != nullptr ? to_origin->next_hop : kNoNode;
+    if (previous_hop != kNoNode) table_.refresh(previous_hop, params_.active_route_timeout, t);
     // ns-3.37 (Forwarding) also keeps both neighbours alive: a relay does not learn from
-    // forwarding that its next hop has gone (only HELLO loss or the MAC tells it).
-    neighbors_.update(to_destination.next_hop, params_.active_route_timeout, t);
-    if (const RouteEntry* to_origin = table_.find(packet.source, t)) {
-      table_.refresh(to_origin->next_hop, params_.active_route_timeout, t);
-      neighbors_.update(to_origin->next_hop, params_.active_route_timeout, t);
-    }
+    // forwarding that its next hop has gone (only HELLO loss or the MAC tells it). The packet
+    // goes out on the route it found even if a purge these updates trigger breaks it (ns-3 has
+    // taken its Ipv4Route by then).
+    update_neighbor(to_destination.next_hop, params_.active_route_timeout);
+    if (previous_hop != kNoNode) update_neighbor(previous_hop, params_.active_route_timeout);
     transmit_data(std::move(packet), to_destination);
     return;
   }
@@ -447,7 +468,6 @@ void Aodv::receive_request(const Rreq& received, NodeId from) {
   if (received.originator == self_ || rreq_ids_.is_duplicate(received.originator, received.id, t)) {
     return;
   }
-  neighbors_.update(from, params_.hello_lifetime(), t);
   Rreq rreq = received;
   const std::uint32_t hops = std::uint32_t{rreq.hop_count} + 1;
   rreq.hop_count = static_cast<std::uint8_t>(std::min(hops, kMaxHopCount));
@@ -482,6 +502,10 @@ void Aodv::receive_request(const Rreq& received, NodeId from) {
   } else if (to_origin->is_valid() && to_origin->next_hop == from) {
     to_origin->expires = std::max(to_origin->expires, t + reverse_lifetime);
   }
+  // ns-3.37 (RecvRequest) records the sender as a neighbour after learning the reverse route,
+  // with or without HELLOs. A purge this triggers never erases `to_origin` (it has just been
+  // found at this instant), though it may invalidate it.
+  update_neighbor(from, params_.hello_lifetime());
   if (to_origin->is_valid() && queue_.has(rreq.originator)) send_queued(rreq.originator);
   const bool reverse_usable = to_origin->is_valid();
 
@@ -592,7 +616,7 @@ void Aodv::receive_hello(const Rrep& hello) {
   route->hop_count = 1;
   route->next_hop = neighbor;
   route->rreq_count = 0;
-  if (params_.enable_hello) neighbors_.update(neighbor, params_.hello_lifetime(), t);
+  if (params_.enable_hello) update_neighbor(neighbor, params_.hello_lifetime());
   if (queue_.has(neighbor)) send_queued(neighbor);
 }
 
@@ -744,16 +768,42 @@ void Aodv::broadcast_control(const Message& message) {
 
 // ---- link breakage ----------------------------------------------------------------------------
 
+// The MAC dropped `packet`, a unicast MPDU to `next_hop` (ns-3's DroppedMpdu: retry limit, full
+// queue or expired wait alike; an ARP packet too). ns-3.37 (NotifyTxError, ProcessTxError)
+// closes the neighbour whose link-layer address is the MPDU's receiver, then purges: a next hop
+// that is not a neighbour, or whose address the ARP cache had not resolved when it was recorded,
+// breaks nothing, and neither does a broadcast; expired neighbours are reported all the same.
 void Aodv::link_failed(const Packet& packet, NodeId next_hop) {
   context_->count("link_failures");
   if (!params_.link_layer_feedback) return;
-  neighbors_.close(next_hop);
-  bool seen = false;
-  for (const NodeId broken : neighbors_.purge(now())) {
-    seen = seen || broken == next_hop;
-    link_broken(broken, broken == next_hop ? &packet : nullptr);
+  if (params_.link_failure_any_next_hop) {
+    // SwarmNet's rule before ARP (RFC 3561 6.11): any report breaks the link to its next hop.
+    if (next_hop == kBroadcast) return;
+    neighbors_.close(next_hop);
+    const bool listed = neighbors_.expiry(next_hop) != kTimeZero;
+    purge_neighbors(&packet, next_hop);
+    if (!listed) link_broken(next_hop, &packet);
+    return;
   }
-  if (!seen) link_broken(next_hop, &packet);
+  if (next_hop != kBroadcast) neighbors_.close_by_address(next_hop);
+  purge_neighbors(&packet, next_hop);
+}
+
+void Aodv::update_neighbor(NodeId neighbor, SimTime lifetime) {
+  const bool resolved = context_->link_address_known(neighbor);
+  if (neighbors_.update(neighbor, lifetime, now(), resolved)) purge_neighbors();
+}
+
+void Aodv::purge_neighbors(const Packet* failed, NodeId failed_hop) {
+  if (neighbors_.empty()) return;
+  for (const NodeId broken : neighbors_.purge(now())) {
+    link_broken(broken, broken == failed_hop ? failed : nullptr);
+  }
+  context_->cancel(neighbor_timer_);
+  neighbor_timer_ = context_->schedule(params_.hello_interval, [this] {
+    neighbor_timer_ = kNoTimer;
+    purge_neighbors();
+  });
 }
 
 void Aodv::link_broken(NodeId neighbor, const Packet* failed) {
@@ -766,8 +816,9 @@ void Aodv::link_broken(NodeId neighbor, const Packet* failed) {
   for (const UnreachableDestination& d : unreachable) {
     RouteEntry* route = table_.find_valid(d.destination, t);
     if (route == nullptr) continue;
-    if (failed != nullptr && !failed->is_control() && failed->destination == d.destination &&
-        start_local_repair(*failed, *route)) {
+    // Only a data packet is repaired: never a control or an ARP packet.
+    if (failed != nullptr && !failed->is_control() && !failed->is_arp() &&
+        failed->destination == d.destination && start_local_repair(*failed, *route)) {
       buffer(*failed);
       continue;
     }
@@ -782,12 +833,13 @@ void Aodv::link_broken(NodeId neighbor, const Packet* failed) {
   if (!rerr.destinations.empty()) send_error(rerr, precursors);
 }
 
-void Aodv::check_neighbors() {
+// Forgets expired routes, blacklist entries and RREQ ids (memory only: lookups age entries
+// themselves). Neighbours have their own timer (purge_neighbors).
+void Aodv::housekeeping() {
   const SimTime t = now();
-  for (const NodeId broken : neighbors_.purge(t)) link_broken(broken, nullptr);
   table_.purge(t);
   rreq_ids_.purge(t);
-  context_->schedule(params_.hello_interval, [this] { check_neighbors(); });
+  context_->schedule(params_.hello_interval, [this] { housekeeping(); });
 }
 
 // ---- timers -----------------------------------------------------------------------------------

@@ -84,9 +84,17 @@ class Aodv final : public Routing {
   void transmit_control(Packet packet, const RouteEntry& route);
   void broadcast_control(const Message& message);
 
+  // Neighbours (ns-3's aodv-neighbor). Records `neighbor` as heard, with whether this node's
+  // ARP cache resolves it now; a new neighbour purges the list, as ns-3's Neighbors::Update does.
+  void update_neighbor(NodeId neighbor, SimTime lifetime);
+  // ns-3's Neighbors::Purge: reports expired and closed neighbours as broken links (`failed`, the
+  // packet the MAC dropped, goes with `failed_hop`'s break) and re-arms the neighbour timer; an
+  // empty list is left alone (no timer).
+  void purge_neighbors(const Packet* failed = nullptr, NodeId failed_hop = kNoNode);
+
   // Link breakage (RFC 3561 section 6.11).
   void link_broken(NodeId neighbor, const Packet* failed);
-  void check_neighbors();
+  void housekeeping();
 
   // Timers.
   void hello_timer_expired();
@@ -112,6 +120,7 @@ class Aodv final : public Routing {
   std::set<NodeId> repairing_;  // destinations whose discovery is a local repair
   std::map<NodeId, TimerId> ack_timers_;
   TimerId queue_timer_ = kNoTimer;
+  TimerId neighbor_timer_ = kNoTimer;  // ns-3's Neighbors timer (one hello_interval after a purge)
   SimTime queue_timer_at_ = kTimeNever;
   SimTime last_broadcast_ = kTimeNever;  // kTimeNever: no broadcast since the last HELLO tick
 

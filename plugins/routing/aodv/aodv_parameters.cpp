@@ -79,9 +79,22 @@ std::vector<ParamSpec> parameter_schema() {
       bool_param("gratuitous_reply", true,
                  "RREQs carry the G flag: an intermediate node that replies also sends a RREP to "
                  "the destination"),
-      bool_param("enable_hello", true, "send HELLO messages and detect broken links by their loss"),
+      bool_param("enable_hello", true,
+                 "send HELLO messages and detect broken links by their loss (false: neighbours "
+                 "are still recorded from RREQs and data traffic and still expire, as in ns-3)"),
       bool_param("link_layer_feedback", true,
-                 "take the MAC's report of an unacknowledged frame (link_failed) as a broken link"),
+                 "take the MAC's report that it dropped a unicast frame to a neighbour "
+                 "(link_failed: retry limit, and with dcf80211's link_failure_reports: "
+                 "every_drop also a full queue or an expired wait) as a broken link; false: "
+                 "such reports are counted and ignored"),
+      text_param("link_failure_match", "neighbor_address",
+                 "which link_failed() reports break a link. neighbor_address (ns-3.37): only a "
+                 "report for a current neighbour whose link-layer address the ARP cache had "
+                 "resolved when it was recorded or refreshed (ns-3 matches the dropped MPDU's "
+                 "receiver address); a report for any other node, or a broadcast, breaks no "
+                 "link. next_hop (SwarmNet before ARP, RFC 3561 6.11): a report breaks the "
+                 "link to its next hop whether or not it is a known neighbour",
+                 {"neighbor_address", "next_hop"}),
       bool_param("increment_seqno_on_break", true,
                  "a route that breaks or expires has its destination sequence number incremented "
                  "(RFC 3561 6.11), and a RERR's newer number is adopted; false: ns-3.37's rule, "
@@ -137,6 +150,7 @@ AodvParameters parameters_from(const ParamSet& params) {
   p.gratuitous_reply = params.boolean("gratuitous_reply");
   p.enable_hello = params.boolean("enable_hello");
   p.link_layer_feedback = params.boolean("link_layer_feedback");
+  p.link_failure_any_next_hop = params.text("link_failure_match") == "next_hop";
   p.increment_seqno_on_break = params.boolean("increment_seqno_on_break");
   p.enable_broadcast = params.boolean("enable_broadcast");
   p.enable_local_repair = params.boolean("enable_local_repair");

@@ -35,6 +35,8 @@ struct AodvParameters {
   bool gratuitous_reply = true;
   bool enable_hello = true;
   bool link_layer_feedback = true;
+  // Which MAC failure reports break a link (link_failure_match).
+  bool link_failure_any_next_hop = false;  // false: "neighbor_address" (ns-3); true: "next_hop"
   bool increment_seqno_on_break = true;
   bool enable_broadcast = true;
   bool enable_local_repair = false;

@@ -4,15 +4,25 @@
 
 namespace swarmnet::aodv {
 
-void Neighbors::update(NodeId neighbor, SimTime lifetime, SimTime now) {
-  Entry& entry = entries_[neighbor];
+bool Neighbors::update(NodeId neighbor, SimTime lifetime, SimTime now, bool address_known) {
+  const auto [it, added] = entries_.try_emplace(neighbor);
+  Entry& entry = it->second;
   entry.expires = std::max(entry.expires, now + lifetime);
+  entry.address_known = entry.address_known || address_known;
   entry.closed = false;
+  return added;
 }
 
 void Neighbors::close(NodeId neighbor) {
   const auto it = entries_.find(neighbor);
   if (it != entries_.end()) it->second.closed = true;
+}
+
+bool Neighbors::close_by_address(NodeId neighbor) {
+  const auto it = entries_.find(neighbor);
+  if (it == entries_.end() || !it->second.address_known) return false;
+  it->second.closed = true;
+  return true;
 }
 
 std::vector<NodeId> Neighbors::purge(SimTime now) {
@@ -31,6 +41,11 @@ std::vector<NodeId> Neighbors::purge(SimTime now) {
 bool Neighbors::is_neighbor(NodeId node, SimTime now) const {
   const auto it = entries_.find(node);
   return it != entries_.end() && !it->second.closed && it->second.expires >= now;
+}
+
+bool Neighbors::address_known(NodeId node) const {
+  const auto it = entries_.find(node);
+  return it != entries_.end() && it->second.address_known;
 }
 
 SimTime Neighbors::expiry(NodeId node) const {

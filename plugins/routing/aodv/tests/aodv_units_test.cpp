@@ -185,6 +185,27 @@ TEST(AodvNeighbors, ExpireAfterTheirLifetimeOrWhenClosed) {
   EXPECT_EQ(neighbors.purge(s(3.1)), (std::vector<NodeId>{4}));
 }
 
+// ns-3's aodv-neighbor: a neighbour's link-layer address is looked up while it is unknown and
+// kept once known; the MAC's report closes only a neighbour with a known address.
+TEST(AodvNeighbors, MatchMacReportsByAResolvedAddressOnly) {
+  Neighbors neighbors;
+  EXPECT_TRUE(neighbors.update(3, s(2), s(0), false));  // new, address unresolved
+  EXPECT_FALSE(neighbors.update(3, s(2), s(0.5), false));
+  EXPECT_FALSE(neighbors.address_known(3));
+  EXPECT_FALSE(neighbors.close_by_address(3));
+  EXPECT_TRUE(neighbors.purge(s(1)).empty());
+  EXPECT_FALSE(neighbors.update(3, s(2), s(1), true));  // resolved now
+  EXPECT_FALSE(neighbors.update(3, s(2), s(1.5), false));
+  EXPECT_TRUE(neighbors.address_known(3));      // kept
+  EXPECT_FALSE(neighbors.close_by_address(4));  // not a neighbour
+  EXPECT_TRUE(neighbors.close_by_address(3));
+  EXPECT_EQ(neighbors.purge(s(1.5)), (std::vector<NodeId>{3}));
+  EXPECT_TRUE(neighbors.empty());
+  neighbors.update(4, s(2), s(2), false);
+  neighbors.close(4);  // link_failure_match: next_hop closes whatever the address
+  EXPECT_EQ(neighbors.purge(s(2)), (std::vector<NodeId>{4}));
+}
+
 TEST(AodvIdCache, RemembersPairsForItsLifetime) {
   IdCache cache(s(5.6));
   EXPECT_FALSE(cache.is_duplicate(1, 10, s(0)));
@@ -244,6 +265,8 @@ TEST(AodvParameters, DefaultsAreNs3sAndDerivedTimesFollowRfc3561) {
   EXPECT_TRUE(p.enable_hello);
   EXPECT_TRUE(p.increment_seqno_on_break);  // RFC 3561, not ns-3.37
   EXPECT_FALSE(p.enable_local_repair);
+  EXPECT_TRUE(p.link_layer_feedback);
+  EXPECT_FALSE(p.link_failure_any_next_hop);  // ns-3's matching by resolved neighbour address
   EXPECT_EQ(p.max_repair_ttl(), 10U);
 
   params.set("node_traversal_time_s", 0.01);
