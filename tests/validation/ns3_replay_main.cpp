@@ -1,7 +1,9 @@
 // swarmnet_ns3_replay: replays a SwarmNet run's mobility trace and traffic schedule in ns-3.37
 // (YansWifi 802.11a ad hoc at a constant 6 Mbps, log-distance propagation, UDP over IPv4, one
 // node per robot) with routing `direct`, `flooding` or `aodv`, and writes the same measures as
-// SwarmNet's summary.json as JSON. docs/validation.md explains the setup.
+// SwarmNet's summary.json as JSON, with ARP's figures. By default the IP stack is ns-3's as users
+// run it (ARP, AODV with layer-2 feedback); --aligned fills the ARP caches in advance instead.
+// docs/validation.md explains the setup.
 #include <ns3/aodv-helper.h>
 #include <ns3/aodv-packet.h>
 #include <ns3/core-module.h>
@@ -57,10 +59,13 @@ struct Options {
   // MAC.
   std::uint32_t rts_threshold_bytes = 65535;
   std::uint32_t queue_packets = 0;  // 0: ns-3's default
-  // ARP entries filled in advance: "permanent", or "auto-generated" as NeighborCacheHelper
-  // leaves them (then ns-3's AODV cannot map a neighbour to its MAC address: no layer-2
-  // feedback), or "none" (ARP resolves by request and reply, ns-3's default stack).
-  std::string arp_entries = "auto-generated";
+  // ARP entries filled in advance: "none" (the default: ARP resolves by request and reply and
+  // ns-3's AODV takes the MAC's dropped MPDUs as layer-2 feedback, ns-3's default stack, as users
+  // run it), "auto-generated" as NeighborCacheHelper leaves them (no ARP frame, and ns-3's AODV
+  // cannot map a neighbour to its MAC address: no layer-2 feedback; what --aligned selects), or
+  // "permanent" (no ARP frame, layer-2 feedback as with real ARP).
+  std::string arp_entries = "none";
+  bool aligned = false;  // --aligned: the configuration aligned with SwarmNet before issue 19
   double queue_max_delay_s = 0.0;  // 0: ns-3's default
   // Flooding.
   sv::FloodingConfig flooding;
@@ -77,6 +82,29 @@ struct MacCounters {
   std::uint64_t tx_drops = 0;   // frames the MAC gave up (retry limit, queue)
   std::map<std::string, std::uint64_t> dropped_mpdus;  // WifiMac DroppedMpdu events by reason
   std::map<std::string, std::uint64_t> rx_drops;       // PhyRxDrop events by reason
+};
+
+// ARP (ns-3's default stack, --arp-entries none): messages handed to the MAC (MacTx), their
+// frames on the air (PhyTxBegin; a unicast reply is retried like any unicast frame), and the
+// packets ARP dropped. ArpL3Protocol's Drop trace fires for a packet arriving while its next
+// hop's resolution is pending and the pending queue (3 packets) is full, for a packet to a next
+// hop whose entry is dead (resolution failed less than DeadTimeout, 100 s, ago), and for an ARP
+// reply nobody waits for; ArpCache's Drop trace for every packet still queued when a resolution
+// gives up (MaxRetries requests unanswered). The trace does not say which next hop a dropped
+// packet waited for: a drop is put down to a full queue or a dead entry from the node's cache
+// (entries pending vs. dead), and where the node has both kinds and the packet's own IP
+// destination is neither, it is counted as ambiguous.
+struct ArpCounters {
+  std::uint64_t requests = 0;                  // requests handed to the MAC, re-sent ones too
+  std::uint64_t replies = 0;                   // replies handed to the MAC (unicast)
+  std::uint64_t request_frames = 0;            // on the air
+  std::uint64_t reply_frames = 0;              // on the air, retries included
+  std::uint64_t queue_full = 0;                // ArpL3Protocol Drop: pending queue full
+  std::uint64_t dead_entry = 0;                // ArpL3Protocol Drop: next hop's entry dead
+  std::uint64_t queue_full_or_dead_entry = 0;  // ArpL3Protocol Drop: either (see above)
+  std::uint64_t unexpected_replies = 0;        // ArpL3Protocol Drop: a reply nobody waited for
+  std::uint64_t retries_exhausted = 0;         // ArpCache Drop: resolution given up
+  std::map<std::string, std::uint64_t> dropped_by_kind;  // IP packets ARP dropped: data, rreq...
 };
 
 struct RoutingCounters {
@@ -101,6 +129,7 @@ struct RoutingCounters {
 using IpDrops = std::map<std::string, std::map<std::string, std::uint64_t>>;
 
 MacCounters g_mac;
+ArpCounters g_arp;
 RoutingCounters g_routing;
 IpDrops g_ip_drops;
 constexpr std::uint16_t kAodvPort = 654;
@@ -200,6 +229,23 @@ std::string drop_reason_name(ns3::Ipv4L3Protocol::DropReason reason) {
   return "other";
 }
 
+// What an ARP frame or MAC-layer packet is: 1 a request, 2 a reply, 0 not ARP. `mac_header`:
+// the packet starts with its 802.11 header (a frame on the air), else with its LLC/SNAP header
+// (a packet handed to the MAC).
+constexpr std::uint32_t kArpFrameBytes = 64;  // 802.11 header 24, LLC/SNAP 8, ARP 28, FCS 4
+int arp_kind(ns3::Ptr<const ns3::Packet> packet, bool mac_header) {
+  ns3::Ptr<ns3::Packet> copy = packet->Copy();
+  if (mac_header) {
+    ns3::WifiMacHeader mac;
+    if (copy->RemoveHeader(mac) == 0 || !mac.IsData()) return 0;
+  }
+  ns3::LlcSnapHeader llc;
+  if (copy->RemoveHeader(llc) == 0 || llc.GetType() != ns3::ArpL3Protocol::PROT_NUMBER) return 0;
+  ns3::ArpHeader arp;
+  if (copy->RemoveHeader(arp) == 0) return 0;
+  return arp.IsRequest() ? 1 : arp.IsReply() ? 2 : 0;
+}
+
 // The message index carried by a data frame's UDP payload, or -1 (not a replayed message).
 std::int64_t frame_message_index(ns3::Ptr<const ns3::Packet> packet) {
   ns3::Ptr<ns3::Packet> copy = packet->Copy();
@@ -222,8 +268,8 @@ std::int64_t frame_message_index(ns3::Ptr<const ns3::Packet> packet) {
   return index ? static_cast<std::int64_t>(*index) : -1;
 }
 
-// Columns: time_ns,node,kind,retry,receiver,bytes,sequence,message_id (receiver -1: broadcast;
-// message_id -1: none).
+// Columns: time_ns,node,kind,retry,receiver,bytes,sequence,message_id (kind data, arp, ack, rts,
+// cts or other; receiver -1: broadcast; message_id -1: none).
 void on_phy_tx_begin_traced(std::uint32_t node, ns3::Ptr<const ns3::Packet> packet,
                             double /*power_w*/) {
   ns3::WifiMacHeader header;
@@ -234,7 +280,7 @@ void on_phy_tx_begin_traced(std::uint32_t node, ns3::Ptr<const ns3::Packet> pack
   std::int64_t message_id = -1;
   if (packet->PeekHeader(header) != 0) {
     if (header.IsData()) {
-      kind = "data";
+      kind = packet->GetSize() == kArpFrameBytes && arp_kind(packet, true) != 0 ? "arp" : "data";
       retry = header.IsRetry() ? 1 : 0;
       sequence = header.GetSequenceNumber();
       const std::int64_t index = frame_message_index(packet);
@@ -265,6 +311,12 @@ void on_phy_tx_begin(ns3::Ptr<const ns3::Packet> packet, double /*power_w*/) {
   } else if (header.IsData()) {
     ++g_mac.data_frames;
     if (header.IsRetry()) ++g_mac.retries;
+    // Only a frame of an ARP message's size is looked into: the count costs nothing on the rest.
+    if (packet->GetSize() == kArpFrameBytes) {
+      const int arp = arp_kind(packet, true);
+      if (arp == 1) ++g_arp.request_frames;
+      if (arp == 2) ++g_arp.reply_frames;
+    }
   } else if (header.IsAck()) {
     ++g_mac.ack_frames;
   } else {
@@ -281,6 +333,73 @@ void on_phy_rx_drop(ns3::Ptr<const ns3::Packet> /*packet*/, ns3::WifiPhyRxfailur
 void on_phy_rx_error(ns3::Ptr<const ns3::Packet> /*packet*/, double /*snr*/) { ++g_mac.rx_errors; }
 
 void on_mac_tx_drop(ns3::Ptr<const ns3::Packet> /*packet*/) { ++g_mac.tx_drops; }
+
+// Every packet handed to the MAC, behind its LLC/SNAP header: ARP requests and replies counted.
+void on_mac_tx(ns3::Ptr<const ns3::Packet> packet) {
+  ns3::LlcSnapHeader llc;
+  if (packet->PeekHeader(llc) == 0 || llc.GetType() != ns3::ArpL3Protocol::PROT_NUMBER) return;
+  const int arp = arp_kind(packet, false);
+  if (arp == 1) ++g_arp.requests;
+  if (arp == 2) ++g_arp.replies;
+}
+
+// For the ARP drop sinks: every node's ARP cache on its wireless interface, and every node's
+// address (the next hops a cache can hold).
+struct ArpState {
+  std::vector<ns3::Ptr<ns3::ArpCache>> cache_of_node;
+  std::vector<ns3::Ipv4Address> addresses;
+};
+ArpState g_arp_state;
+
+// The kind of an IP packet ARP dropped (it carries its IPv4 header): "data", an AODV message type
+// or "other"; "" if it is no IP packet. *destination is its IP destination.
+std::string arp_dropped_kind(ns3::Ptr<const ns3::Packet> packet, ns3::Ipv4Address* destination) {
+  if (packet->GetSize() < 20) return "";
+  ns3::Ptr<ns3::Packet> copy = packet->Copy();
+  ns3::Ipv4Header ip;
+  if (copy->RemoveHeader(ip) == 0) return "";
+  *destination = ip.GetDestination();
+  std::int64_t message_id = -1;
+  return payload_kind(ip, copy, &message_id);
+}
+
+// ArpL3Protocol Drop at `node` (see ArpCounters).
+void on_arp_l3_drop(std::uint32_t node, ns3::Ptr<const ns3::Packet> packet) {
+  ns3::Ipv4Address destination;
+  const std::string kind = arp_dropped_kind(packet, &destination);
+  if (kind.empty()) {
+    ++g_arp.unexpected_replies;
+    return;
+  }
+  ++g_arp.dropped_by_kind[kind];
+  const ns3::Ptr<ns3::ArpCache> cache = g_arp_state.cache_of_node[node];
+  bool pending = false;
+  bool dead = false;
+  for (const ns3::Ipv4Address& address : g_arp_state.addresses) {
+    ns3::ArpCache::Entry* entry = cache->Lookup(address);
+    if (entry == nullptr || entry->IsExpired()) continue;
+    pending = pending || entry->IsWaitReply();
+    dead = dead || entry->IsDead();
+  }
+  ns3::ArpCache::Entry* own = cache->Lookup(destination);
+  const bool own_pending = own != nullptr && !own->IsExpired() && own->IsWaitReply();
+  const bool own_dead = own != nullptr && !own->IsExpired() && own->IsDead();
+  if (pending && (!dead || own_pending)) {
+    ++g_arp.queue_full;
+  } else if (dead && (!pending || own_dead)) {
+    ++g_arp.dead_entry;
+  } else {
+    ++g_arp.queue_full_or_dead_entry;
+  }
+}
+
+// ArpCache Drop: a packet still queued when its resolution gave up.
+void on_arp_cache_drop(ns3::Ptr<const ns3::Packet> packet) {
+  ++g_arp.retries_exhausted;
+  ns3::Ipv4Address destination;
+  const std::string kind = arp_dropped_kind(packet, &destination);
+  ++g_arp.dropped_by_kind[kind.empty() ? "other" : kind];
+}
 
 // The MAC's DroppedMpdu trace is what ns-3's AODV takes as layer-2 feedback (a unicast MPDU
 // dropped for any reason closes the link to its receiver).
@@ -544,11 +663,24 @@ nlohmann::ordered_json run(const Options& options) {
   ns3::Ipv4AddressHelper addresses;
   addresses.SetBase("10.1.0.0", kSubnetMask);
   const ns3::Ipv4InterfaceContainer interfaces = addresses.Assign(devices);
-  // By default no ARP exchange: SwarmNet's own engine has none, and ns-3's ARP would add frames
-  // and drop packets queued behind a pending resolution. `none` leaves ARP as ns-3 users run it
-  // (and as the ns-3 engine runs it).
+  // By default (`none`) ARP runs as ns-3 users run it: requests and replies on the air, packets
+  // queued (3 at most) behind a pending resolution, and ns-3's AODV mapping its neighbours to MAC
+  // addresses from the alive entries, so that the MAC's DroppedMpdu reports break links. The
+  // aligned setup (`auto-generated`, --aligned) fills every cache before the run: no ARP frame,
+  // as in SwarmNet's `network.arp: static`, and no layer-2 feedback for ns-3's AODV.
   if (options.arp_entries != "none") ns3::NeighborCacheHelper().PopulateNeighborCache();
   if (options.arp_entries == "permanent") make_arp_entries_permanent(nodes, interfaces);
+  for (std::uint32_t i = 0; i < node_count; ++i) {
+    g_arp_state.addresses.push_back(interfaces.GetAddress(i));
+    const ns3::Ptr<ns3::Node> node = nodes.Get(i);
+    g_arp_state.cache_of_node.push_back(node->GetObject<ns3::Ipv4L3Protocol>()
+                                            ->GetInterface(interfaces.Get(i).second)
+                                            ->GetArpCache());
+    node->GetObject<ns3::ArpL3Protocol>()->TraceConnectWithoutContext(
+        "Drop", ns3::MakeBoundCallback(&on_arp_l3_drop, i));
+    g_arp_state.cache_of_node.back()->TraceConnectWithoutContext(
+        "Drop", ns3::MakeCallback(&on_arp_cache_drop));
+  }
 
   std::int64_t stream = 1000;
   stream += ns3::WifiHelper().AssignStreams(devices, stream);
@@ -586,6 +718,8 @@ nlohmann::ordered_json run(const Options& options) {
       ns3::MakeCallback(&on_phy_rx_error));
   ns3::Config::ConnectWithoutContext("/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Mac/MacTxDrop",
                                      ns3::MakeCallback(&on_mac_tx_drop));
+  ns3::Config::ConnectWithoutContext("/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Mac/MacTx",
+                                     ns3::MakeCallback(&on_mac_tx));
   ns3::Config::ConnectWithoutContext("/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Mac/DroppedMpdu",
                                      ns3::MakeCallback(&on_dropped_mpdu));
   ns3::Config::ConnectWithoutContext("/NodeList/*/$ns3::Ipv4L3Protocol/Tx",
@@ -649,8 +783,11 @@ nlohmann::ordered_json run(const Options& options) {
   out["sim_time_s"] = duration_s;
   const Json measures = metrics.report();
   for (const auto& [key, value] : measures.items()) out[key] = value;
+  // tx_frames counts every frame on the air, ARP's included (data_frames too: an ARP message
+  // goes as a data frame).
   out["mac"] = {{"tx_frames", g_mac.tx_frames},
                 {"data_frames", g_mac.data_frames},
+                {"arp_frames", g_arp.request_frames + g_arp.reply_frames},
                 {"ack_frames", g_mac.ack_frames},
                 {"other_frames", g_mac.other_frames},
                 {"retries", g_mac.retries},
@@ -658,6 +795,21 @@ nlohmann::ordered_json run(const Options& options) {
                 {"tx_drops", g_mac.tx_drops},
                 {"rx_drops", g_mac.rx_drops},
                 {"dropped_unicast_mpdus", g_mac.dropped_mpdus}};
+  const std::uint64_t arp_packet_drops = g_arp.queue_full + g_arp.dead_entry +
+                                         g_arp.queue_full_or_dead_entry + g_arp.retries_exhausted;
+  out["arp"] = {{"entries", options.arp_entries},
+                {"requests_sent", g_arp.requests},
+                {"replies_sent", g_arp.replies},
+                {"request_frames", g_arp.request_frames},
+                {"reply_frames", g_arp.reply_frames},
+                {"drops",
+                 {{"queue_full", g_arp.queue_full},
+                  {"dead_entry", g_arp.dead_entry},
+                  {"queue_full_or_dead_entry", g_arp.queue_full_or_dead_entry},
+                  {"retries_exhausted", g_arp.retries_exhausted},
+                  {"unexpected_replies", g_arp.unexpected_replies}}},
+                {"packets_dropped", arp_packet_drops},
+                {"dropped_by_kind", g_arp.dropped_by_kind}};
   out["ip_drops"] = g_ip_drops;
   if (options.routing == "aodv") {
     nlohmann::ordered_json by_ttl = nlohmann::ordered_json::object();
@@ -701,6 +853,8 @@ nlohmann::ordered_json run(const Options& options) {
                        {"error_model", options.error_model},
                        {"rts_threshold_bytes", options.rts_threshold_bytes},
                        {"arp_entries", options.arp_entries},
+                       {"aligned", options.aligned},
+                       {"aodv_layer2_feedback", options.arp_entries != "auto-generated"},
                        {"flooding_ttl", options.flooding.ttl},
                        {"flooding_jitter_max_s", options.flooding.jitter_max_s},
                        {"flooding_cache_size", options.flooding.cache_size}};
@@ -713,7 +867,10 @@ int main(int argc, char** argv) {
   Options options;
   CLI::App app{
       "Replays a SwarmNet run's mobility trace and traffic schedule in ns-3.37 "
-      "(802.11a at 6 Mbps, log-distance propagation) and writes its measures as JSON"};
+      "(802.11a at 6 Mbps, log-distance propagation) and writes its measures as JSON. By "
+      "default ns-3 runs as its users run it: ARP by request and reply, AODV with the MAC's "
+      "layer-2 feedback; --aligned gives the setup aligned with SwarmNet's own engine (ARP "
+      "filled in advance, no layer-2 feedback)"};
   app.add_option("run_dir", options.run_dir,
                  "SwarmNet run directory: mobility.ns2, traffic.csv (and summary.json)")
       ->required()
@@ -765,12 +922,22 @@ int main(int argc, char** argv) {
                  "WifiMacQueue MaxSize in packets (0: ns-3's default, 500)");
   app.add_option("--queue-max-delay-s", options.queue_max_delay_s,
                  "WifiMacQueue MaxDelay (0: ns-3's default, 0.5 s)");
-  app.add_option("--arp-entries", options.arp_entries,
-                 "state of the ARP entries filled in advance (auto-generated: ns-3's AODV gets "
-                 "no layer-2 link-break feedback; none: no entry filled, ARP resolves as in "
-                 "ns-3's default stack)")
-      ->check(CLI::IsMember({"permanent", "auto-generated", "none"}))
-      ->capture_default_str();
+  CLI::Option* arp_entries =
+      app.add_option("--arp-entries", options.arp_entries,
+                     "ARP entries filled in advance. none: no entry filled, ARP resolves by "
+                     "request and reply and ns-3's AODV takes the MAC's dropped MPDUs as "
+                     "layer-2 feedback (ns-3's default stack, as users run it); auto-generated: "
+                     "every neighbour filled by NeighborCacheHelper, no ARP frame, and no "
+                     "layer-2 feedback for AODV (the aligned setup, = --aligned); permanent: "
+                     "filled, no ARP frame, AODV with layer-2 feedback")
+          ->check(CLI::IsMember({"permanent", "auto-generated", "none"}))
+          ->capture_default_str();
+  app.add_flag("--aligned", options.aligned,
+               "the configuration aligned with SwarmNet's own engine before issue 19 "
+               "(docs/validation.md): ARP caches filled in advance (--arp-entries "
+               "auto-generated), so no ARP frame and no layer-2 feedback for ns-3's AODV; pair "
+               "it with SwarmNet's network.arp: static and aodv link_layer_feedback: false")
+      ->excludes(arp_entries);
   app.add_option("--flooding-ttl", options.flooding.ttl, "flooding: hops a packet may travel")
       ->check(CLI::Range(1, 255))
       ->capture_default_str();
@@ -781,6 +948,7 @@ int main(int argc, char** argv) {
                  "flooding: (originator, sequence) pairs remembered")
       ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
+  if (options.aligned) options.arp_entries = "auto-generated";
 
   try {
     const nlohmann::ordered_json result = run(options);
