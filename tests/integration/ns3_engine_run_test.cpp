@@ -75,9 +75,9 @@ TEST(Ns3Engine, StaticArpSendsNoArpFrameAndDynamicArpDoes) {
   const auto aligned = run_summary(dir.path() / "static", " --set network.arp=static");
   ASSERT_FALSE(dynamic.empty());
   ASSERT_FALSE(aligned.empty());
-  EXPECT_GT(dynamic["mac"]["arp_requests"].get<int>(), 0);
-  EXPECT_EQ(aligned["mac"]["arp_requests"].get<int>(), 0);
-  EXPECT_EQ(aligned["mac"]["arp_replies"].get<int>(), 0);
+  EXPECT_GT(dynamic["arp"]["requests_sent"].get<int>(), 0);
+  EXPECT_EQ(aligned["arp"]["requests_sent"].get<int>(), 0);
+  EXPECT_EQ(aligned["arp"]["replies_sent"].get<int>(), 0);
   EXPECT_GT(aligned["packets"]["delivered"].get<int>(), 0);
 }
 

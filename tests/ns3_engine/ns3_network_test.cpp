@@ -113,8 +113,9 @@ TEST(Ns3Network, ReportsCountersInTheirFixedOrder) {
   EXPECT_EQ(names(report.routing),
             (std::vector<std::string>{"control_packets", "control_bytes", "data_forwards", "rreq",
                                       "rrep", "hello", "rerr", "rrep_ack"}));
-  EXPECT_EQ(names(report.drops), (std::vector<std::string>{"no_route", "queue_full", "ttl_expired",
-                                                           "retry_limit", "buffer_timeout"}));
+  EXPECT_EQ(names(report.drops),
+            (std::vector<std::string>{"no_route", "queue_full", "ttl_expired", "retry_limit",
+                                      "buffer_timeout", "arp_queue_full", "arp_unresolved"}));
 }
 
 TEST(Ns3Network, DirectUnicastArrivesAfterItsAirtime) {
@@ -168,14 +169,14 @@ TEST(Ns3Network, NothingArrivesOutOfRange) {
   const Report sent = network.report();
   EXPECT_EQ(count(sent.mac, "tx_frames"), 2U);  // the broadcast, the first ARP request
   EXPECT_EQ(count(sent.mac, "arp_requests"), 1U);
-  // ARP asks three more times, a second apart, then drops the message waiting for it: the link
-  // failed, counted as a MAC's retry limit.
+  // ARP asks three more times, a second apart, then drops the message waiting for it.
   EXPECT_TRUE(run(network, 6 * kS, far).empty());
   const Report dropped = network.report();
   EXPECT_EQ(count(dropped.mac, "arp_requests"), 4U);
   EXPECT_EQ(count(dropped.mac, "arp_replies"), 0U);
   EXPECT_EQ(count(dropped.mac, "arp_drops"), 1U);
-  EXPECT_EQ(count(dropped.drops, "retry_limit"), 1U);
+  EXPECT_EQ(count(dropped.drops, "arp_unresolved"), 1U);
+  EXPECT_EQ(count(dropped.drops, "retry_limit"), 0U);
   EXPECT_EQ(count(dropped.drops, "queue_full"), 0U);
 }
 

@@ -191,13 +191,13 @@ void CounterSinks::on_dropped_mpdu(ns3::WifiMacDropReason reason,
 
 void CounterSinks::on_arp_queue_drop(ns3::Ptr<const ns3::Packet> packet) {
   ++counts_.arp_drops;
-  if (is_data(packet)) ++counts_.queue_full;
+  if (is_data(packet)) ++counts_.arp_queue_full;  // or sent to a dead entry: one trace for both
 }
 
-// ARP asked its neighbour MaxRetries times in vain: the link failed, as a MAC's retry limit.
+// ARP asked its neighbour MaxRetries times in vain: the packets it held are dropped.
 void CounterSinks::on_arp_give_up(ns3::Ptr<const ns3::Packet> packet) {
   ++counts_.arp_drops;
-  if (is_data(packet)) ++counts_.retry_limit;
+  if (is_data(packet)) ++counts_.arp_unresolved;
 }
 
 // Every IP packet sent on an interface, IP header first: the routing protocol's own.
@@ -308,7 +308,9 @@ Report CounterSinks::report(std::uint64_t events) const {
                   {"queue_full", c.queue_full},
                   {"ttl_expired", c.ttl_expired},
                   {"retry_limit", c.retry_limit},
-                  {"buffer_timeout", c.buffer_timeout}};
+                  {"buffer_timeout", c.buffer_timeout},
+                  {"arp_queue_full", c.arp_queue_full},
+                  {"arp_unresolved", c.arp_unresolved}};
   return report;
 }
 

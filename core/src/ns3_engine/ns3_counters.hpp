@@ -33,7 +33,9 @@ struct Counts {
   std::uint64_t rx_drops = 0;    // receptions the PHY dropped (PhyRxDrop, any reason)
   std::uint64_t arp_requests = 0;
   std::uint64_t arp_replies = 0;
-  std::uint64_t arp_drops = 0;  // ArpL3Protocol and ArpCache Drop traces
+  std::uint64_t arp_drops = 0;       // ArpL3Protocol and ArpCache Drop traces
+  std::uint64_t arp_queue_full = 0;  // data among them: ArpL3Protocol's (queue full, dead entry)
+  std::uint64_t arp_unresolved = 0;  // data among them: ArpCache's (retries exhausted)
   // Routing.
   std::uint64_t control_packets = 0;  // routing protocol's packets sent on a wireless interface
   std::uint64_t control_bytes = 0;    // their IP sizes

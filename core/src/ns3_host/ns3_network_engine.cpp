@@ -141,6 +141,20 @@ NetworkReport Ns3NetworkEngine::report() const {
   NetworkReport report = metrics_.report(in_flight, counters.events);
   report.mac = named_counts(counters.mac);
   report.routing = named_counts(counters.routing);
+  // ns-3's ARP counts go where the native engine's are (summary.json's `arp`), under the names
+  // they share with it; ns-3 reports its ARP drops as one figure (arp_drops).
+  report.arp.clear();
+  const auto arp_names = {std::pair{"arp_requests", "requests_sent"},
+                          std::pair{"arp_replies", "replies_sent"},
+                          std::pair{"arp_drops", "packets_dropped"}};
+  for (const auto& [ns3_name, name] : arp_names) {
+    const auto it =
+        std::find_if(report.mac.begin(), report.mac.end(),
+                     [ns3_name = ns3_name](const NamedCount& c) { return c.name == ns3_name; });
+    if (it == report.mac.end()) continue;
+    report.arp.push_back({name, it->value});
+    report.mac.erase(it);
+  }
   report.routing.push_back({"late_arrivals", late_arrivals_});
   report.dropped = named_counts(counters.drops);
   return report;
