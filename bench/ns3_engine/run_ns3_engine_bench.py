@@ -4,13 +4,15 @@
 For each swarm size at the study's constant density (500 x 500 m for 50 robots) and each seed,
 the reference study's scenario (configs/paper/evaluation.yaml: 802.11a DCF at 6 Mbit/s, SINR
 reception with a 120 m range, AODV, 20% of the robots sending 512-byte messages 5 times a
-second) runs, interleaved:
-  native      `swarmnet run` with network.engine: native (the default)
-  ns3-static  `swarmnet run` with network.engine: ns3 and network.arp: static: ns-3.37 as the
-              network half, with the models corresponding to SwarmNet's (no ARP frames, as
-              SwarmNet's own engine has no ARP)
-  ns3         the same with ns-3's ARP (network.arp: ns3, the default): ns-3 as its
-              users run it
+second) runs, interleaved, in two pairs:
+  native-static  `swarmnet run` with network.engine: native and network.arp: static (every
+                 address known before the run, no ARP frame)
+  ns3-static     the same with network.engine: ns3: ns-3.37 as the network half, with the
+                 models corresponding to SwarmNet's
+  native         `swarmnet run` with network.engine: native and ARP (network.arp: ns3, the
+                 default; docs/arp.md)
+  ns3            the same with network.engine: ns3: ns-3 as its users run it
+Each ns-3 variant's delivery is compared with its native pair's.
 and, on the ns3 run's own recorded motion and messages, ns-3 alone twice:
   replay       swarmnet_ns3_replay (an independent ns-3 program: ns-2 mobility, the same stack,
                ARP not pre-filled)
@@ -20,9 +22,10 @@ protocol's transport) over each of them.
 Writes OUT/results.json (every run's measures) and OUT/table.md (two tables: the engines pooled
 over the seeds, and the coupling overhead).
 
-  python3 bench/ns3_engine/run_ns3_engine_bench.py --build build --out runs/bench-ns3-engine
+  python3 bench/ns3_engine/run_ns3_engine_bench.py --build build --out runs/bench-ns3-engine-arp
 With --resume, the measures already in OUT/results.json are kept for every run whose directory
-is still there, and only what is missing runs (delete a variant's directories to run it again).
+is still there, and only what is missing runs (delete a variant's directories to run it again);
+sizes and seeds of OUT/results.json that this sweep does not name stay in the tables.
 """
 import argparse
 import json
@@ -35,9 +38,12 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent.parent
 # Every variant: ns-3.37's AODV does not increment a broken route's sequence number, and the native
 # engine is told to do as ns-3 does, so that the models correspond (docs/ns3-engine.md).
 ALIGNED = ["--set", "network.routing.params.increment_seqno_on_break=false"]
-VARIANTS = {"native": ["--set", "network.engine=native"],
+VARIANTS = {"native_static": ["--set", "network.engine=native", "--set", "network.arp=static"],
             "ns3_static": ["--set", "network.engine=ns3", "--set", "network.arp=static"],
+            "native": ["--set", "network.engine=native"],
             "ns3": ["--set", "network.engine=ns3"]}
+# The native run each ns-3 variant is compared with (same ARP setting).
+BASELINE = {"ns3_static": "native_static", "ns3": "native"}
 
 
 def run(command):
@@ -63,7 +69,7 @@ def measures(summary):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default="build", help="build directory")
-    parser.add_argument("--out", default="runs/bench-ns3-engine", help="output directory")
+    parser.add_argument("--out", default="runs/bench-ns3-engine-arp", help="output directory")
     parser.add_argument("--robots", default="50,100,200")
     parser.add_argument("--seeds", default="1,2,3")
     parser.add_argument("--duration-s", type=float, default=20.0)
@@ -114,8 +120,15 @@ def main():
                                        "pdr": summary["pdr"]}
             rows.append(row)
             print(f"{n} robots, seed {seed} done", file=sys.stderr)
-            write_outputs(out, rows)  # after every run, so that a stopped sweep keeps its rows
+            write_outputs(out, with_earlier(rows, previous))  # a stopped sweep keeps its rows
     print((out / "table.md").read_text(), end="")
+
+
+def with_earlier(rows, previous):
+    """`rows`, plus the earlier results (--resume) of sizes and seeds this sweep did not run."""
+    done = {(r["robots"], r["seed"]) for r in rows}
+    kept = [r for key, r in previous.items() if key not in done]
+    return sorted(rows + kept, key=lambda r: (r["robots"], r["seed"]))
 
 
 def pooled(rows, engine, key):
@@ -130,7 +143,8 @@ def fmt(value, spec):
 def write_outputs(out, rows):
     (out / "results.json").write_text(json.dumps(rows, indent=2) + "\n")
     sizes = sorted({r["robots"] for r in rows})
-    names = {"native": "native", "ns3_static": "ns-3, static ARP", "ns3": "ns-3, ARP"}
+    names = {"native_static": "native, static ARP", "ns3_static": "ns-3, static ARP",
+             "native": "native, ARP", "ns3": "ns-3, ARP"}
     lines = ["| robots | runs | engine | delivery | mean delay ms | control packets per delivery | "
              "MAC frames | network CPU s per simulated s | real-time factor |",
              "|---|---|---|---|---|---|---|---|---|"]
@@ -139,8 +153,9 @@ def write_outputs(out, rows):
         for variant in VARIANTS:
             delivered = sum(r[variant]["delivered"] for r in group)
             pdr = delivered / max(1, sum(r[variant]["unicast_sent"] for r in group))
-            delta = "" if variant == "native" else (
-                f" ({100 * (pdr - sum(r['native']['delivered'] for r in group) / max(1, sum(r['native']['unicast_sent'] for r in group))):+.1f})")
+            base = BASELINE.get(variant)
+            delta = "" if base is None else (
+                f" ({100 * (pdr - sum(r[base]['delivered'] for r in group) / max(1, sum(r[base]['unicast_sent'] for r in group))):+.1f})")
             delay = pooled(group, variant, "delay_mean_s")
             control = sum(r[variant]["control_packets"] for r in group)
             frames = sum(r[variant]["mac_tx_frames"] for r in group) / len(group)
