@@ -11,8 +11,8 @@ time of both network halves measured on every row.
 
 Both sides run as ns-3 users run ns-3 by default: ARP by request and reply (SwarmNet
 `network.arp: ns3`, the replay's default) and AODV with layer-2 feedback (SwarmNet
-`link_layer_feedback: true`); AODV keeps ns-3.37's sequence-number rule
-(`increment_seqno_on_break: false`) either way. --aligned runs the setup the grid was aligned in
+`link_layer_feedback: true`); AODV keeps ns-3.37's sequence-number rules
+(`increment_seqno_on_break: false`, `rreq_invalidates_sender_seqno: true`) either way. --aligned runs the setup the grid was aligned in
 before issue 19: no ARP frame (SwarmNet `network.arp: static`, the replay's --aligned) and no
 layer-2 feedback (validation_runner.SETUPS).
 
@@ -101,6 +101,9 @@ def main():
                              "network.routing.params.increment_seqno_on_break=false")
     parser.add_argument("--max-robots", type=int, default=100000, help="skip larger rows")
     parser.add_argument("--stack", choices=["auto", "80211", "disk"], default="auto")
+    parser.add_argument("--resume", action="store_true",
+                        help="read back every seed's pair that already ran to the end in OUT with "
+                             "the same commands (its commands.json) instead of running it again")
     parser.add_argument("--aligned", action="store_true",
                         help="the setup aligned before issue 19: no ARP frame on either side "
                              "(SwarmNet network.arp: static, the replay's --aligned) and AODV "
@@ -195,7 +198,7 @@ def main():
         started = time.monotonic()
         try:
             row = run_row(swarmnet, ns3, scenario, os.path.join(out, name), routing, stack,
-                          overrides, args.seeds, tolerances, args.aligned)
+                          overrides, args.seeds, tolerances, args.aligned, args.resume)
         except RuntimeError as error:
             print(f"  failed: {error}", flush=True)
             row = {"robots": robots, "routing": routing, "error": str(error), "pass": False}
@@ -274,14 +277,14 @@ def seed_list(text):
 
 
 def run_row(swarmnet, ns3, scenario, work_dir, routing, stack, overrides, seeds, tolerances,
-            aligned=False):
+            aligned=False, resume=False):
     """One row: compare.compare()'s row for one seed; for several, the row of the pooled runs,
     with the range of the per-seed delivery differences and every seed's own row."""
     pairs = []
     for seed in seeds:
         seed_dir = work_dir if len(seeds) == 1 else os.path.join(work_dir, f"seed{seed}")
         pairs.append(vr.run_pair(swarmnet, ns3, scenario, seed_dir, routing, stack, overrides,
-                                 seed, log=lambda s: None, aligned=aligned))
+                                 seed, log=lambda s: None, aligned=aligned, resume=resume))
     if len(pairs) == 1:
         return vr.compared(*pairs[0], routing, stack, tolerances, aligned)
     per_seed = [dict(vr.compared(*pair, routing, stack, tolerances, aligned), seed=seed)

@@ -43,10 +43,12 @@ DISK_NETWORK = {
 #          auto-generated entries) and no layer-2 feedback (with auto-generated entries ns-3.37's
 #          AODV cannot map a neighbour to its MAC address, so no dropped frame reaches it).
 #
-# In both, SwarmNet's AODV keeps ns-3.37's sequence-number rule: ns-3.37 keeps a broken or expired
+# In both, SwarmNet's AODV keeps ns-3.37's sequence-number rules: ns-3.37 keeps a broken or expired
 # route's sequence number where RFC 3561 6.11 increments it (docs/validation.md: on the dense row
-# its re-discoveries draw twice the RREPs). SwarmNet's AODV is compared like for like: ns-3's
-# variant of the protocol, not SwarmNet's RFC default.
+# its re-discoveries draw twice the RREPs), and a RREQ leaves the route to the neighbour that sent
+# it without a valid sequence number, so that no node answers for that neighbour until its next
+# HELLO (without it SwarmNet's discoveries end a ring earlier: issue 19's delay). SwarmNet's AODV
+# is compared like for like: ns-3's variant of the protocol, not SwarmNet's default.
 SETUPS = {
     "default": {"arp": "ns3", "link_layer_feedback": True, "replay": []},
     "aligned": {"arp": "static", "link_layer_feedback": False, "replay": ["--aligned"]},
@@ -67,7 +69,7 @@ def setup_name(aligned):
 
 def aodv_params(aligned=False):
     return {"link_layer_feedback": SETUPS[setup_name(aligned)]["link_layer_feedback"],
-            "increment_seqno_on_break": False}
+            "increment_seqno_on_break": False, "rreq_invalidates_sender_seqno": True}
 
 
 def routing_choice(routing, aligned=False):
@@ -125,27 +127,47 @@ def compared(summary, replay, routing, stack, tolerances=None, aligned=False):
 
 
 def run_pair(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), seed=1, log=print,
-             aligned=False):
-    """Runs SwarmNet, then ns-3 on its traces; returns (summary.json, the replay's JSON)."""
+             aligned=False, resume=False):
+    """Runs SwarmNet, then ns-3 on its traces; returns (summary.json, the replay's JSON). With
+    `resume`, a pair that WORK_DIR/commands.json says ran to the end with these very commands is
+    read back instead of run again."""
     run_dir = os.path.join(work_dir, "swarmnet")
     ns3_json = os.path.join(work_dir, "ns3.json")
     os.makedirs(work_dir, exist_ok=True)
-    command = [swarmnet, "run", scenario, "--seed", str(seed), "--out", run_dir, "--overwrite"]
-    command += swarmnet_overrides(stack, routing, aligned)
+    swarmnet_command = [swarmnet, "run", scenario, "--seed", str(seed), "--out", run_dir,
+                        "--overwrite"]
+    swarmnet_command += swarmnet_overrides(stack, routing, aligned)
     for override in overrides:
-        command += ["--set", override]
-    _run(command, os.path.join(work_dir, "swarmnet.out"), log)
-    command = [ns3, run_dir, "--routing", routing, "--seed", str(seed), "-o", ns3_json]
-    command += NS3_RADIO + replay_options(aligned)
+        swarmnet_command += ["--set", override]
+    ns3_command = [ns3, run_dir, "--routing", routing, "--seed", str(seed), "-o", ns3_json]
+    ns3_command += NS3_RADIO + replay_options(aligned)
     if routing == "flooding":
-        command += ["--flooding-ttl", str(FLOODING["ttl"]),
-                    "--flooding-jitter-max-s", str(FLOODING["jitter_max_s"])]
-    _run(command, os.path.join(work_dir, "ns3.out"), log)
+        ns3_command += ["--flooding-ttl", str(FLOODING["ttl"]),
+                        "--flooding-jitter-max-s", str(FLOODING["jitter_max_s"])]
+    record = os.path.join(work_dir, "commands.json")
+    planned = {"swarmnet": [str(c) for c in swarmnet_command],
+               "ns3": [str(c) for c in ns3_command]}
+    if not (resume and _ran(record, planned)):
+        if os.path.exists(record):
+            os.remove(record)  # a pair half rerun is no longer the recorded one
+        _run(swarmnet_command, os.path.join(work_dir, "swarmnet.out"), log)
+        _run(ns3_command, os.path.join(work_dir, "ns3.out"), log)
+        with open(record, "w", encoding="utf-8") as f:
+            json.dump(planned, f, indent=1)
     with open(os.path.join(run_dir, "summary.json"), encoding="utf-8") as f:
         summary = json.load(f)
     with open(ns3_json, encoding="utf-8") as f:
         replay = json.load(f)
     return summary, replay
+
+
+def _ran(record, planned):
+    """Whether `record` (written once both runs of a pair ended) names the `planned` commands."""
+    try:
+        with open(record, encoding="utf-8") as f:
+            return json.load(f) == planned
+    except (OSError, ValueError):
+        return False
 
 
 def _run(command, output_path, log):

@@ -104,7 +104,11 @@ PluginInfo Aodv::info() {
       "Departures from ns-3, all from RFC 3561: every route update follows section 6.2 (ns-3 "
       "overwrites reverse routes unconditionally); a destination sets its sequence number to "
       "the maximum of its own and the RREQ's (6.6.1); link breaks increment the sequence numbers "
-      "they report (6.11), and so do expiring routes (increment_seqno_on_break).",
+      "they report (6.11), and so do expiring routes (increment_seqno_on_break). One more, "
+      "SwarmNet's own, for loop freedom: a RREQ leaves the route to the neighbour it came from "
+      "with its sequence number, where ns-3 (and RFC 3561 6.5) mark the number unknown until the "
+      "neighbour's next HELLO or RREP, so that meanwhile no node answers a RREQ for that "
+      "neighbour and discoveries reach further (rreq_invalidates_sender_seqno: true).",
       parameter_schema()};
 }
 
@@ -501,6 +505,21 @@ void Aodv::receive_request(const Rreq& received, NodeId from) {
     to_origin->expires = std::max(to_origin->expires, t + reverse_lifetime);
   } else if (to_origin->is_valid() && to_origin->next_hop == from) {
     to_origin->expires = std::max(to_origin->expires, t + reverse_lifetime);
+  }
+  if (params_.rreq_invalidates_sender_seqno) {
+    // ns-3.37 (RecvRequest, after the reverse route): the route to the neighbour the RREQ came
+    // from becomes a valid one-hop route for active_route_timeout with the RREQ's originator
+    // sequence number, marked unknown. Until a HELLO or a RREP restores it, no node answers a
+    // RREQ for that neighbour (an intermediate reply needs a valid number): the neighbour's own
+    // reply is awaited. When the sender is the originator this is the reverse route itself.
+    if (RouteEntry* to_sender = table_.find(from, t)) {
+      to_sender->expires = t + params_.active_route_timeout;
+      to_sender->valid_seq = false;
+      to_sender->seq = rreq.originator_seq;
+      to_sender->state = RouteState::valid;
+      to_sender->hop_count = 1;
+      to_sender->next_hop = from;
+    }
   }
   // ns-3.37 (RecvRequest) records the sender as a neighbour after learning the reverse route,
   // with or without HELLOs. A purge this triggers never erases `to_origin` (it has just been

@@ -100,6 +100,13 @@ std::vector<ParamSpec> parameter_schema() {
                  "(RFC 3561 6.11), and a RERR's newer number is adopted; false: ns-3.37's rule, "
                  "the number stays as it was, so that any node with an equally fresh route may "
                  "answer the next RREQ"),
+      bool_param("rreq_invalidates_sender_seqno", false,
+                 "true: ns-3.37's rule (RecvRequest): a RREQ heard from a neighbour leaves the "
+                 "route to that neighbour valid but without a valid sequence number (it takes "
+                 "the RREQ's originator number), so that no node answers a RREQ for the "
+                 "neighbour as an intermediate until a HELLO or a RREP from it gives one back; "
+                 "false: the route keeps its number and its validity, which keeps routes loop "
+                 "free (with true, a RREP with an equal number may replace the route)"),
       bool_param("enable_broadcast", true,
                  "rebroadcast application broadcasts (with duplicate detection and data_ttl)"),
       bool_param("enable_local_repair", false,
@@ -152,6 +159,7 @@ AodvParameters parameters_from(const ParamSet& params) {
   p.link_layer_feedback = params.boolean("link_layer_feedback");
   p.link_failure_any_next_hop = params.text("link_failure_match") == "next_hop";
   p.increment_seqno_on_break = params.boolean("increment_seqno_on_break");
+  p.rreq_invalidates_sender_seqno = params.boolean("rreq_invalidates_sender_seqno");
   p.enable_broadcast = params.boolean("enable_broadcast");
   p.enable_local_repair = params.boolean("enable_local_repair");
   p.local_add_ttl = count_param(params, "local_add_ttl");

@@ -38,6 +38,7 @@ struct AodvParameters {
   // Which MAC failure reports break a link (link_failure_match).
   bool link_failure_any_next_hop = false;  // false: "neighbor_address" (ns-3); true: "next_hop"
   bool increment_seqno_on_break = true;
+  bool rreq_invalidates_sender_seqno = false;
   bool enable_broadcast = true;
   bool enable_local_repair = false;
   std::uint32_t local_add_ttl = 2;
