@@ -99,9 +99,10 @@ def main():
                   "--set", f"arena.height_m={side}", "--set", f"duration_s={args.duration_s}",
                   "--quiet"]
         integrated, alone, replay = out / f"integrated-{n}", out / f"robot-alone-{n}", out / f"replay-{n}"
-        # ns-3.37's AODV does not increment a broken route's sequence number: say so.
+        # ns-3.37's AODV's sequence-number rules (docs/ns3-engine.md): say so.
         engine = ["--set", "network.engine=ns3", "--set",
-                  "network.routing.params.increment_seqno_on_break=false"
+                  "network.routing.params.increment_seqno_on_break=false", "--set",
+                  "network.routing.params.rreq_invalidates_sender_seqno=true"
                   ] if args.engine == "ns3" else []
         swarmnet(binary, "run", str(scenario), *common, *engine, "--out", str(integrated),
                  "--overwrite")

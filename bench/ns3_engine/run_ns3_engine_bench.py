@@ -35,9 +35,11 @@ import subprocess
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent.parent
-# Every variant: ns-3.37's AODV does not increment a broken route's sequence number, and the native
-# engine is told to do as ns-3 does, so that the models correspond (docs/ns3-engine.md).
-ALIGNED = ["--set", "network.routing.params.increment_seqno_on_break=false"]
+# Every variant: ns-3.37's AODV's sequence-number rules (a broken route's number is not
+# incremented; a RREQ leaves the route to its sender without a valid number), which the native
+# engine is told to follow, so that the models correspond (docs/ns3-engine.md).
+ALIGNED = ["--set", "network.routing.params.increment_seqno_on_break=false",
+           "--set", "network.routing.params.rreq_invalidates_sender_seqno=true"]
 VARIANTS = {"native_static": ["--set", "network.engine=native", "--set", "network.arp=static"],
             "ns3_static": ["--set", "network.engine=ns3", "--set", "network.arp=static"],
             "native": ["--set", "network.engine=native"],

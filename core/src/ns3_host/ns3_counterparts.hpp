@@ -151,9 +151,11 @@ struct Ns3FixedBehaviour {
   std::string_view behaviour;  // what ns-3 does, for the refusal
 };
 
-inline constexpr std::array<Ns3FixedBehaviour, 8> kNs3FixedBehaviour{{
+inline constexpr std::array<Ns3FixedBehaviour, 9> kNs3FixedBehaviour{{
     {"aodv", "increment_seqno_on_break", 0,
      "ns-3.37's AODV does not increment a broken route's destination sequence number"},
+    {"aodv", "rreq_invalidates_sender_seqno", 1,
+     "ns-3.37's AODV leaves the route to a RREQ's sender without a valid sequence number"},
     {"aodv", "enable_local_repair", 0, "ns-3.37's AODV has no local repair"},
     {"aodv", "rrep_ack_required", 0,
      "ns-3.37's AODV requests a RREP-ACK only when an intermediate node answers"},
