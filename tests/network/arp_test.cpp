@@ -27,6 +27,14 @@ struct RecordingLink final : Arp::Link {
     SimTime at;
   };
   explicit RecordingLink(Scheduler& scheduler) : scheduler(scheduler) {}
+  Packet make_packet(NodeId destination) override {
+    Packet packet;
+    packet.uid = uids.take();
+    packet.source = kSelf;
+    packet.destination = destination;
+    packet.sent_at = scheduler.now();
+    return packet;
+  }
   void send_to_mac(Packet packet, NodeId next_hop) override {
     sent.push_back({std::move(packet), next_hop, scheduler.now()});
   }
@@ -39,13 +47,14 @@ struct RecordingLink final : Arp::Link {
     return n;
   }
   Scheduler& scheduler;
+  PacketUidSource uids;
   std::vector<Sent> sent;
   std::vector<std::pair<std::uint64_t, DropReason>> dropped;
 };
 
 class ArpTest : public ::testing::Test {
  protected:
-  ArpTest() : link_(scheduler_), arp_(kSelf, ArpTimings{}, scheduler_, metrics_, uids_, 7, link_) {}
+  ArpTest() : link_(scheduler_), arp_(kSelf, ArpTimings{}, scheduler_, metrics_, 7, link_) {}
 
   static Packet data(std::uint64_t uid) {
     Packet packet;
@@ -74,7 +83,6 @@ class ArpTest : public ::testing::Test {
 
   Scheduler scheduler_;
   NetworkMetrics metrics_;
-  PacketUidSource uids_;
   RecordingLink link_;
   Arp arp_;
 };

@@ -6,12 +6,11 @@
 namespace swarmnet {
 
 Arp::Arp(NodeId self, const ArpTimings& timings, Scheduler& scheduler, NetworkMetrics& metrics,
-         PacketUidSource& packet_uids, std::uint64_t seed, Link& link)
+         std::uint64_t seed, Link& link)
     : self_(self),
       cache_(timings),
       scheduler_(scheduler),
       metrics_(metrics),
-      packet_uids_(packet_uids),
       random_(seed),
       link_(link) {}
 
@@ -52,12 +51,7 @@ void Arp::receive(const Packet& packet) {
 bool Arp::resolved(NodeId neighbor) const { return cache_.resolved(neighbor, scheduler_.now()); }
 
 Packet Arp::make_arp_packet(LinkProtocol protocol, NodeId destination) {
-  Packet packet;
-  packet.uid = packet_uids_.take();
-  packet.source = self_;
-  packet.destination = destination;
-  packet.message_id = kNoMessage;
-  packet.sent_at = scheduler_.now();
+  Packet packet = link_.make_packet(destination);
   packet.protocol = protocol;
   return packet;
 }

@@ -14,7 +14,6 @@
 
 #include "network/arp_cache.hpp"
 #include "network/network_metrics.hpp"
-#include "network/packet_uid_source.hpp"
 #include "network/scheduler.hpp"
 #include "swarmnet/packet.hpp"
 #include "swarmnet/random.hpp"
@@ -23,9 +22,11 @@ namespace swarmnet {
 
 class Arp {
  public:
-  // What ARP needs of its node: the MAC's queue, and the node's drop accounting.
+  // What ARP needs of its node: new packets, the MAC's queue, and the node's drop accounting.
   class Link {
    public:
+    // A fresh packet from this node to `destination` (uid, source, sent_at set; no message).
+    virtual Packet make_packet(NodeId destination) = 0;
     virtual void send_to_mac(Packet packet, NodeId next_hop) = 0;
     virtual void drop(const Packet& packet, DropReason reason) = 0;
 
@@ -34,7 +35,7 @@ class Arp {
   };
 
   Arp(NodeId self, const ArpTimings& timings, Scheduler& scheduler, NetworkMetrics& metrics,
-      PacketUidSource& packet_uids, std::uint64_t seed, Link& link);
+      std::uint64_t seed, Link& link);
   Arp(const Arp&) = delete;
   Arp& operator=(const Arp&) = delete;
 
@@ -58,7 +59,6 @@ class Arp {
   ArpCache cache_;
   Scheduler& scheduler_;
   NetworkMetrics& metrics_;
-  PacketUidSource& packet_uids_;
   RandomStream random_;  // request jitter only
   Link& link_;
 };

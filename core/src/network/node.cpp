@@ -18,7 +18,7 @@ Node::Node(NodeId id, const NodeServices& services, const PhyConfig& phy_config,
       mac_(std::move(mac)),
       routing_(std::move(routing)) {
   if (arp) {
-    arp_.emplace(id, *arp, services.scheduler, services.metrics, services.packet_uids,
+    arp_.emplace(id, *arp, services.scheduler, services.metrics,
                  derive_seed(services.arp_seed, {id}), arp_link_);
   }
 }
@@ -32,6 +32,16 @@ void Node::drop(const Packet& packet, DropReason reason) {
   services_.metrics.dropped(reason);
   services_.trace.record(services_.scheduler.now(), PacketEvent::drop, id_, packet,
                          to_string(reason));
+}
+
+Packet Node::new_packet(NodeId destination) {
+  Packet packet;
+  packet.uid = services_.packet_uids.take();
+  packet.source = id_;
+  packet.destination = destination;
+  packet.message_id = kNoMessage;
+  packet.sent_at = services_.scheduler.now();
+  return packet;
 }
 
 void Node::phy_collision(const Frame& frame) {
@@ -82,13 +92,7 @@ void Node::RoutingPort::count(std::string_view counter, std::uint64_t amount) {
 }
 
 Packet Node::RoutingPort::make_control_packet(NodeId destination) {
-  Packet packet;
-  packet.uid = node_.services_.packet_uids.take();
-  packet.source = node_.id_;
-  packet.destination = destination;
-  packet.message_id = kNoMessage;
-  packet.sent_at = now();
-  return packet;
+  return node_.new_packet(destination);
 }
 
 void Node::RoutingPort::send_to_mac(Packet packet, NodeId next_hop) {

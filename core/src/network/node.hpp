@@ -115,6 +115,7 @@ class Node final : private PhyListener {
   class ArpLink final : public Arp::Link {
    public:
     explicit ArpLink(Node& node) : node_(node) {}
+    Packet make_packet(NodeId destination) override { return node_.new_packet(destination); }
     void send_to_mac(Packet packet, NodeId next_hop) override;
     void drop(const Packet& packet, DropReason reason) override { node_.drop(packet, reason); }
 
@@ -123,6 +124,8 @@ class Node final : private PhyListener {
   };
 
   void drop(const Packet& packet, DropReason reason);
+  // A packet of this node's own (routing's control packets, ARP's): fresh uid, no message.
+  Packet new_packet(NodeId destination);
 
   // PhyListener: the PHY's events go to the MAC.
   void phy_transmit_end() override { mac_->on_transmit_end(); }

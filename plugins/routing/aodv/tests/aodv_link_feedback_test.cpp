@@ -8,37 +8,15 @@
 
 #include <memory>
 
-#include "aodv.hpp"
-#include "swarmnet/testing.hpp"
+#include "aodv_one_node.hpp"
 
 namespace swarmnet::aodv {
 namespace {
 
-using testing::FakeRoutingContext;
 using testing::PacketBuilder;
-using testing::ParamOverrides;
-using testing::plugin_args;
-using testing::TestScheduler;
 
-class AodvLinkFeedback : public ::testing::Test {
+class AodvLinkFeedback : public AodvOneNode {
  protected:
-  void make(const ParamOverrides& overrides = {}) {
-    aodv_ = std::make_unique<Aodv>(plugin_args<Aodv>(overrides, 5, 0, 10));
-    aodv_->attach(node_);
-  }
-  void hear(const Message& message, NodeId from) {
-    Packet packet = PacketBuilder().uid(next_uid_++).from(from).to(kBroadcast).hops(1).build();
-    std::visit([&packet](const auto& m) { encode(m, packet.header); }, message);
-    aodv_->receive(std::move(packet), from);
-  }
-  void hello_from(NodeId neighbor) {
-    Rrep hello;
-    hello.destination = neighbor;
-    hello.originator = neighbor;
-    hello.destination_seq = 1;
-    hello.lifetime_ms = 2000;
-    hear(hello, neighbor);
-  }
   // A RREP answering this node's (imagined) RREQ: a route to `destination` through `next_hop`.
   void route_via(NodeId destination, NodeId next_hop) {
     Rrep rrep;
@@ -73,11 +51,6 @@ class AodvLinkFeedback : public ::testing::Test {
     packet.protocol = LinkProtocol::arp_reply;
     return packet;
   }
-
-  TestScheduler scheduler_;
-  FakeRoutingContext node_{scheduler_, 0, 10};
-  std::unique_ptr<Aodv> aodv_;
-  std::uint64_t next_uid_ = 1;
 };
 
 TEST_F(AodvLinkFeedback, AReportForANextHopThatIsNoNeighbourBreaksNothing) {

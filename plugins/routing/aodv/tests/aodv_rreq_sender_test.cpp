@@ -12,37 +12,17 @@
 
 #include <memory>
 
-#include "aodv.hpp"
-#include "swarmnet/testing.hpp"
+#include "aodv_one_node.hpp"
 
 namespace swarmnet::aodv {
 namespace {
 
-using testing::FakeRoutingContext;
-using testing::PacketBuilder;
 using testing::ParamOverrides;
-using testing::plugin_args;
-using testing::TestScheduler;
 
-class AodvRreqSender : public ::testing::Test {
+class AodvRreqSender : public AodvOneNode {
  protected:
   void make(bool ns3_rule) {
-    aodv_ = std::make_unique<Aodv>(
-        plugin_args<Aodv>(ParamOverrides{{"rreq_invalidates_sender_seqno", ns3_rule}}, 5, 0, 10));
-    aodv_->attach(node_);
-  }
-  void hear(const Message& message, NodeId from) {
-    Packet packet = PacketBuilder().uid(next_uid_++).from(from).to(kBroadcast).hops(1).build();
-    std::visit([&packet](const auto& m) { encode(m, packet.header); }, message);
-    aodv_->receive(std::move(packet), from);
-  }
-  void hello_from(NodeId neighbor, std::uint32_t seq) {
-    Rrep hello;
-    hello.destination = neighbor;
-    hello.originator = neighbor;
-    hello.destination_seq = seq;
-    hello.lifetime_ms = 2000;
-    hear(hello, neighbor);
+    AodvOneNode::make(ParamOverrides{{"rreq_invalidates_sender_seqno", ns3_rule}});
   }
   // A RREQ of `originator` (sequence number `originator_seq`) for `destination`, relayed to this
   // node by `from`.
@@ -70,11 +50,6 @@ class AodvRreqSender : public ::testing::Test {
     }
     return n;
   }
-
-  TestScheduler scheduler_;
-  FakeRoutingContext node_{scheduler_, 0, 10};
-  std::unique_ptr<Aodv> aodv_;
-  std::uint64_t next_uid_ = 1;
 };
 
 TEST_F(AodvRreqSender, Ns3LeavesTheRouteToARreqSenderValidWithoutASequenceNumber) {
