@@ -227,7 +227,8 @@ void Channel::schedule_next(std::uint32_t index) {
           if constexpr (kEnds) {
             phy.signal_end(f.frame, link.power_dbm);
           } else {
-            phy.signal_start(f.frame.uid, link.power_dbm, link.power_mw);
+            phy.signal_start(f.frame.uid, link.power_dbm, link.power_mw,
+                             f.step_sequence<false>(next - 1));
           }
           if (next == links.size()) {
             // Recycled only after the last end: the receivers' callbacks read the frame.

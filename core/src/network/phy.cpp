@@ -177,11 +177,12 @@ void Phy::leave_window() {
   for (Arrival& a : arrivals_) a.in_window = false;
 }
 
-void Phy::open_window() {
+void Phy::open_window(std::uint64_t sequence) {
   window_open_ = true;
   window_end_ = scheduler_->now() + kDetectionWindow;
-  // The key a timer scheduled now would get: armed later, it runs exactly where it would have.
-  window_sequence_ = scheduler_->reserve_sequences(1);
+  // The opening signal's own key: a timer armed later at (window_end_, sequence) runs where it
+  // would have, and the key does not depend on when the PHY learned of the signal.
+  window_sequence_ = sequence;
 }
 
 void Phy::arm_window_if_needed(bool strong_candidate) {
@@ -228,6 +229,12 @@ void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm) {
 }
 
 void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_power_mw) {
+  const std::uint64_t sequence = sinr_model() ? scheduler_->reserve_sequences(1) : 0;
+  signal_start(frame_uid, rx_power_dbm, rx_power_mw, sequence);
+}
+
+void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_power_mw,
+                       std::uint64_t start_sequence) {
   if (!sinr_model()) {
     arrivals_.push_back(Arrival{frame_uid, rx_power_dbm});
     report_busy_change();
@@ -240,7 +247,7 @@ void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_p
     note_interference_change();
   } else if (!transmitting_) {
     arrivals_.back().in_window = true;
-    if (!window_open_) open_window();
+    if (!window_open_) open_window(start_sequence);
     arm_window_if_needed(rx_power_dbm >= cca_threshold_dbm_);
   }
   // No carrier-sense change is possible here: locked or transmitting, the medium is busy anyway,

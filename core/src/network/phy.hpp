@@ -139,6 +139,12 @@ class Phy {
 
   // A signal's first and last bit reach this node. `rx_power_mw` is rx_power_dbm in milliwatts
   // (the channel computes it once per link and step); the two-argument form converts.
+  // `start_sequence` is the scheduler key's sequence number of this start (the channel reserves
+  // one per receiver): a detection window this signal opens ends at its start + 4 us with that
+  // sequence number, so the window's place among same-instant events does not depend on when the
+  // PHY learns of the signal. The forms without it reserve a fresh number (tests).
+  void signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_power_mw,
+                    std::uint64_t start_sequence);
   void signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_power_mw);
   void signal_start(std::uint64_t frame_uid, double rx_power_dbm);
   void signal_end(const Frame& frame, double rx_power_dbm);
@@ -166,7 +172,7 @@ class Phy {
   // transmission).
   [[nodiscard]] bool senses_busy(double sensed_mw) const;
   void report_busy_change();
-  void open_window();
+  void open_window(std::uint64_t sequence);
   // Arms the open window's timer if its end would detect a frame (`strong_candidate`: one that
   // just joined is strong enough) or change carrier sense.
   void arm_window_if_needed(bool strong_candidate);
