@@ -34,10 +34,22 @@ Channel::Channel(const NetworkSettings& settings, PropagationChain chain, Schedu
       use_grid_(settings.network.channel.cutoff && std::isfinite(event_cutoff_m_)),
       has_quiet_signals_(event_dbm_ > audibility_dbm_),
       cache_links_(!chain_.varies_per_frame()),
+      // Far signals are found again by their step's links, kept while frames may be asked about:
+      // models that draw per frame would need every frame's links kept; they keep events.
+      far_lazy_(settings.network.channel.lazy_far_signals &&
+                settings.network.phy.model == PhyModel::sinr && cache_links_),
+      phy_config_(settings.network.phy),
       phys_(node_count, nullptr),
+      link_of_receiver_(node_count),
       positions_(node_count, Vec2::Zero()),
       arena_bounds_{0.0, 0.0, settings.arena.width_m, settings.arena.height_m},
       step_links_(node_count) {
+  if (far_lazy_) {
+    far_signals_ = std::make_unique<FarSignals>(
+        scheduler_, phys_,
+        std::min(dbm_to_milliwatts(settings.network.phy.cca_threshold_dbm),
+                 dbm_to_milliwatts(settings.network.phy.energy_detection_dbm)));
+  }
   rebuild_grid();
 }
 
@@ -46,6 +58,7 @@ void Channel::attach(NodeId node, Phy& phy) {
   if (frames_sent() > 0) throw std::logic_error("Channel: a PHY attached after the first frame");
   phys_.at(node) = &phy;
   if (has_quiet_signals_) phy.set_quiet_signal_source(this, node);
+  if (far_signals_) phy.set_far_signal_source(far_signals_.get(), node);
 }
 
 void Channel::set_positions(std::span<const Vec2> positions) {
@@ -97,40 +110,53 @@ void Channel::transmit(NodeId transmitter, Frame frame, SimTime duration) {
   const std::uint32_t index = acquire_fanout();
   FrameFanout& fanout = *fanouts_[index];
   if (cache_links_) {
-    std::shared_ptr<const Links>& cached = step_links_[transmitter];
+    std::shared_ptr<const ChannelLinks>& cached = step_links_[transmitter];
     if (!cached) {
-      auto links = std::make_shared<Links>();
+      auto links = std::make_shared<ChannelLinks>();
       compute_links(transmitter, uid, *links);
       cached = std::move(links);
     }
     fanout.step_links = cached;
-    fanout.links = cached.get();
+    fanout.links = &cached->links;
   } else {
     compute_links(transmitter, uid, fanout.own_links);
-    fanout.links = &fanout.own_links;
+    fanout.links = &fanout.own_links.links;
   }
-  if (fanout.links->empty()) {
+  const std::vector<Link>& links = *fanout.links;
+  if (links.empty()) {
     release_fanout(index);
     return;
   }
   // Sequence numbers as if each receiver's start and end had been scheduled now, in arrival
-  // order; both streams run in that order.
-  fanout.first_sequence = scheduler_.reserve_sequences(2 * fanout.links->size());
+  // order; both streams run in that order. Far links keep theirs (FarSignals hands them over).
+  fanout.first_sequence = scheduler_.reserve_sequences(2 * links.size());
+  if (far_signals_)
+    far_signals_->frame_sent(uid, duration, fanout.first_sequence, fanout.step_links);
+  fanout.next_start = next_near(links, 0);
+  if (fanout.next_start == links.size()) {
+    release_fanout(index);
+    return;
+  }
   fanout.frame = std::move(frame);
   fanout.sent = scheduler_.now();
   fanout.duration = duration;
-  fanout.next_start = 0;
-  fanout.next_end = 0;
+  fanout.next_end = fanout.next_start;
   schedule_next<false>(index);
   schedule_next<true>(index);
+}
+
+std::size_t Channel::next_near(const std::vector<Link>& links, std::size_t i) {
+  while (i < links.size() && links[i].far) ++i;
+  return i;
 }
 
 double Channel::link_power_dbm(const RadioLink& link) const {
   return chain_.rx_power_dbm(tx_power_dbm_, link) + rx_gain_db_;
 }
 
-void Channel::compute_links(NodeId transmitter, std::uint64_t uid, Links& links) const {
-  links.clear();
+void Channel::compute_links(NodeId transmitter, std::uint64_t uid, ChannelLinks& link_set) const {
+  link_set.clear();
+  std::vector<Link>& links = link_set.links;
   const Vec2 tx_position = positions_[transmitter];
   const auto visit = [&](NodeId receiver) {
     if (receiver == transmitter) return;
@@ -140,8 +166,10 @@ void Channel::compute_links(NodeId transmitter, std::uint64_t uid, Links& links)
     const double power_dbm =
         link_power_dbm({transmitter, receiver, tx_position, rx_position, distance_m, uid});
     if (power_dbm < event_dbm_) return;  // inaudible, or quiet: see quiet_signals()
-    links.push_back(Link{propagation_delay(distance_m), receiver, phys_[receiver], power_dbm,
-                         dbm_to_milliwatts(power_dbm)});
+    const double power_mw = dbm_to_milliwatts(power_dbm);
+    const bool far = far_lazy_ && is_far_signal(phy_config_, power_dbm, power_mw);
+    links.push_back(Link{propagation_delay(distance_m), receiver, far, phys_[receiver], power_dbm,
+                         power_mw, far ? far_signals_->units(power_mw) : 0});
   };
   if (use_grid_) {
     // In cell order: the links are sorted below, so the visit needs no order of its own.
@@ -153,6 +181,7 @@ void Channel::compute_links(NodeId transmitter, std::uint64_t uid, Links& links)
   std::sort(links.begin(), links.end(), [](const Link& a, const Link& b) {
     return a.delay != b.delay ? a.delay < b.delay : a.receiver < b.receiver;
   });
+  if (far_lazy_) link_set.index_far(link_of_receiver_);
 }
 
 void Channel::remember_on_air(const Frame& frame, SimTime duration) {
@@ -220,15 +249,16 @@ void Channel::schedule_next(std::uint32_t index) {
         // Steps that are due next are run here, without a round trip through the heap.
         FrameFanout& f = *fanouts_[index];
         std::size_t& next = kEnds ? f.next_end : f.next_start;
-        const Links& links = *f.links;
+        const std::vector<Link>& links = *f.links;
         while (true) {
-          const Link& link = links[next++];
+          const std::size_t i = next;
+          const Link& link = links[i];
+          next = next_near(links, i + 1);
           Phy& phy = *link.phy;
           if constexpr (kEnds) {
             phy.signal_end(f.frame, link.power_dbm);
           } else {
-            phy.signal_start(f.frame.uid, link.power_dbm, link.power_mw,
-                             f.step_sequence<false>(next - 1));
+            phy.signal_start(f.frame.uid, link.power_dbm, link.power_mw, f.step_sequence<false>(i));
           }
           if (next == links.size()) {
             // Recycled only after the last end: the receivers' callbacks read the frame.

@@ -39,6 +39,8 @@
 #include <span>
 #include <vector>
 
+#include "network/channel_links.hpp"
+#include "network/far_signals.hpp"
 #include "network/network_settings.hpp"
 #include "network/phy.hpp"
 #include "network/propagation_chain.hpp"
@@ -91,15 +93,7 @@ class Channel final : public QuietSignalSource {
                      std::vector<QuietSignal>& out) const override;
 
  private:
-  // A receiver of a transmitter's frames, as the channel computed it at transmission.
-  struct Link {
-    SimTime delay;
-    NodeId receiver;
-    Phy* phy;  // the receiver's, kept beside the link: one cache line per receiver, not two
-    double power_dbm;
-    double power_mw;
-  };
-  using Links = std::vector<Link>;  // by (delay, receiver): arrival order
+  using Link = ChannelLink;
   // A frame that may still reach someone, for quiet-signal queries.
   struct OnAir {
     std::uint64_t uid;
@@ -112,11 +106,12 @@ class Channel final : public QuietSignalSource {
     Frame frame;
     SimTime sent{};
     SimTime duration{};
-    std::shared_ptr<const Links> step_links;  // the transmitter's links of the step, if reused
-    Links own_links;                          // this frame's links otherwise (capacity kept)
-    const Links* links = nullptr;             // whichever of the two this frame uses
-    std::uint64_t first_sequence = 0;         // link i's signal starts with first_sequence + 2 i
-    std::size_t next_start = 0;
+    std::shared_ptr<const ChannelLinks>
+        step_links;                            // the transmitter's links of the step, if reused
+    ChannelLinks own_links;                    // this frame's links otherwise (capacity kept)
+    const std::vector<Link>* links = nullptr;  // whichever of the two this frame uses
+    std::uint64_t first_sequence = 0;          // link i's signal starts with first_sequence + 2 i
+    std::size_t next_start = 0;  // each stream's next link that is not far (or the end)
     std::size_t next_end = 0;
 
     // When and with which reserved sequence number link i's start (kEnds false) or end runs.
@@ -138,7 +133,9 @@ class Channel final : public QuietSignalSource {
   [[nodiscard]] double link_power_dbm(const RadioLink& link) const;
   // Fills `links` with the receivers that get `transmitter`'s frame `uid` as events, in arrival
   // order.
-  void compute_links(NodeId transmitter, std::uint64_t uid, Links& links) const;
+  void compute_links(NodeId transmitter, std::uint64_t uid, ChannelLinks& links) const;
+  // The first link at or after `i` that is not far (links.size() if none).
+  static std::size_t next_near(const std::vector<Link>& links, std::size_t i);
   std::uint32_t acquire_fanout();
   void release_fanout(std::uint32_t fanout);
   // Schedules the next step of one stream of a frame's fan-out: its receivers' signal starts
@@ -157,7 +154,10 @@ class Channel final : public QuietSignalSource {
   bool use_grid_;
   bool has_quiet_signals_;
   bool cache_links_;  // the chain gives a link the same power for every frame
+  bool far_lazy_;     // far signals go to FarSignals, not to events (network.channel.far_signals)
+  PhyConfig phy_config_;
   std::vector<Phy*> phys_;
+  mutable std::vector<std::uint32_t> link_of_receiver_;  // compute_links' scratch
   std::vector<Vec2> positions_;
   std::shared_ptr<const std::vector<Vec2>> positions_snapshot_;  // made at the step's first frame
   std::deque<OnAir> on_air_;                                     // by time sent
@@ -168,7 +168,8 @@ class Channel final : public QuietSignalSource {
   Rect grid_bounds_;
   bool grid_ready_ = false;
   // Per transmitter, its links in the current step (cache_links_ only; emptied by set_positions).
-  std::vector<std::shared_ptr<const Links>> step_links_;
+  std::vector<std::shared_ptr<const ChannelLinks>> step_links_;
+  std::unique_ptr<FarSignals> far_signals_;  // far_lazy_ only
   // Fan-outs are recycled (by index, so growth does not move a live one's address in use).
   std::vector<std::unique_ptr<FrameFanout>> fanouts_;
   std::vector<std::uint32_t> free_fanouts_;

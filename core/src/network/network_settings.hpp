@@ -71,6 +71,10 @@ struct ArpTimings {
 
 struct ChannelConfig {
   bool cutoff = true;  // visit only nodes that can possibly hear a frame (DESIGN.md section 7)
+  // network.channel.far_signals: lazy (true) hands far signals (network/far_signals.hpp) to a
+  // receiver only when they can matter to it; events (false) hands every signal over as events.
+  // Both give the same results to the bit; lazy is faster.
+  bool lazy_far_signals = true;
 };
 
 // The layers of every node, as the scenario's `network:` section chose them.

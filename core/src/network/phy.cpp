@@ -15,6 +15,8 @@ namespace {
 
 // ns-3's PreambleDetectionDuration.
 constexpr SimTime kDetectionWindow{4000};
+// How far back sync_window looks for far starts at first (several windows' worth).
+constexpr SimTime kSyncLookBack{16000};
 // A lost frame counts as a collision when it would have survived alone with at least this.
 constexpr double kCollisionAloneSuccess = 0.9;
 
@@ -43,6 +45,13 @@ double audibility_threshold_dbm(const PhyConfig& config) {
     return noise_floor_dbm(config) + config.interference_floor_db;
   }
   return config.rx_sensitivity_dbm;
+}
+
+bool is_far_signal(const PhyConfig& config, double rx_power_dbm, double rx_power_mw) {
+  if (config.model != PhyModel::sinr) return false;
+  const double sensing_mw = std::min(dbm_to_milliwatts(config.cca_threshold_dbm),
+                                     dbm_to_milliwatts(config.energy_detection_dbm));
+  return rx_power_dbm < config.cca_threshold_dbm && rx_power_mw < sensing_mw;
 }
 
 double event_threshold_dbm(const PhyConfig& config) {
@@ -102,6 +111,99 @@ bool Phy::senses_busy(double sensed_mw) const {
 void Phy::set_quiet_signal_source(const QuietSignalSource* source, NodeId self) {
   quiet_source_ = source;
   self_ = self;
+}
+
+void Phy::set_far_signal_source(FarSignalSource* source, NodeId self) {
+  far_source_ = source;
+  self_ = self;
+}
+
+void Phy::sync_window() {
+  if (far_source_ == nullptr || far_events_) return;
+  const EventKey now = scheduler_->current_key();
+  if (!(window_synced_ < now)) return;
+  if (transmitting_ || lock_) {  // no window opens now, and every window was closed
+    window_synced_ = now;
+    return;
+  }
+  // Only the last few far starts can matter: a window lasts 4 us, so a start with none in the
+  // 4 us before it opens a window whatever came earlier. Look back a little, and further only
+  // while the earliest start found could have joined an earlier window.
+  SimTime look_back = kSyncLookBack;
+  while (true) {
+    const bool cut = now.time - look_back > window_synced_.time + kDetectionWindow;
+    const EventKey from = cut ? EventKey{now.time - look_back, 0} : window_synced_;
+    far_scratch_.clear();
+    far_source_->far_starts(self_, from, now, far_scratch_);
+    if (cut && !far_scratch_.empty() &&
+        far_scratch_.front().start.time < from.time + kDetectionWindow) {
+      look_back = look_back * 2;
+      if (look_back + kDetectionWindow > FarSignalSource::kFarStartHistory) {
+        throw std::logic_error(
+            "PHY: far signals start less than 4 us apart for longer than the "
+            "channel keeps them");
+      }
+      continue;
+    }
+    // Cut: every window opened before `from` has ended by the first start found (or by now).
+    if (cut && window_open_) close_window();
+    break;
+  }
+  for (const FarSignal& signal : far_scratch_) {
+    // signal_start for a far signal at an idle PHY, less what cannot matter (see far_events).
+    close_window_before(signal.start);
+    if (!window_open_) open_window(signal.start.time, signal.start.sequence);
+  }
+  window_synced_ = now;
+}
+
+void Phy::begin_far_events(const std::vector<FarSignal>& signals) {
+  sync_window();
+  close_passed_window();
+  far_events_ = true;
+  for (const FarSignal& signal : signals) {
+    // A reception under way rebuilds its steps from these too (the source no longer lists them).
+    if (lock_) lock_->far.push_back(signal);
+    if (!scheduler_->has_passed(signal.end.time, signal.end.sequence)) schedule_far_signal(signal);
+  }
+}
+
+EventKey Phy::far_history_start() const {
+  return lock_ ? lock_->detected : scheduler_->current_key();
+}
+
+void Phy::far_signal_event(const FarSignal& signal) { schedule_far_signal(signal); }
+
+void Phy::end_far_events() {
+  far_events_ = false;
+  window_synced_ = scheduler_->current_key();
+}
+
+void Phy::schedule_far_signal(const FarSignal& signal) {
+  const std::uint64_t uid = signal.frame_uid;
+  scheduler_->schedule_reserved(signal.end.time, signal.end.sequence,
+                                [this, uid] { end_unlocked_signal(uid); });
+  if (!scheduler_->has_passed(signal.start.time, signal.start.sequence)) {
+    const double dbm = signal.power_dbm;
+    const double mw = signal.power_mw;
+    const std::uint64_t sequence = signal.start.sequence;
+    scheduler_->schedule_reserved(signal.start.time, sequence, [this, uid, dbm, mw, sequence] {
+      signal_start(uid, dbm, mw, sequence);
+    });
+    return;
+  }
+  // Already arriving: it joins the arrivals in start order, in the open window if it started in
+  // it (every signal that started at an idle PHY since the window opened is in it; see
+  // sync_window, run just before).
+  const EventKey opener{window_end_ - kDetectionWindow, window_sequence_};
+  const auto before = [&](const Arrival& a) {
+    return EventKey{a.start, a.start_sequence} < signal.start;
+  };
+  auto position = arrivals_.end();
+  while (position != arrivals_.begin() && !before(*std::prev(position))) --position;
+  arrivals_.insert(position,
+                   Arrival{uid, signal.power_dbm, signal.power_mw, signal.start.time,
+                           signal.start.sequence, window_open_ && !(signal.start < opener)});
 }
 
 double Phy::quiet_mw_now() {
@@ -177,9 +279,9 @@ void Phy::leave_window() {
   for (Arrival& a : arrivals_) a.in_window = false;
 }
 
-void Phy::open_window(std::uint64_t sequence) {
+void Phy::open_window(SimTime start, std::uint64_t sequence) {
   window_open_ = true;
-  window_end_ = scheduler_->now() + kDetectionWindow;
+  window_end_ = start + kDetectionWindow;
   // The opening signal's own key: a timer armed later at (window_end_, sequence) runs where it
   // would have, and the key does not depend on when the PHY learned of the signal.
   window_sequence_ = sequence;
@@ -211,6 +313,13 @@ void Phy::close_passed_window() {
   }
 }
 
+void Phy::close_window_before(EventKey at) {
+  if (window_open_ && detection_timer_ == kNoTimer &&
+      EventKey{window_end_, window_sequence_} < at) {
+    close_window();
+  }
+}
+
 void Phy::close_window() {
   if (detection_timer_ != kNoTimer) scheduler_->cancel(detection_timer_);
   detection_timer_ = kNoTimer;
@@ -220,6 +329,8 @@ void Phy::close_window() {
 
 void Phy::end_transmission() {
   transmitting_ = false;
+  // Far signals that started during the transmission opened no window.
+  if (sinr_model()) window_synced_ = scheduler_->current_key();
   reported_busy_ = medium_busy();
   listener_.phy_transmit_end();
 }
@@ -240,14 +351,19 @@ void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_p
     report_busy_change();
     return;
   }
+  if (!lock_ && !transmitting_) sync_window();
   close_passed_window();
   const SimTime now = scheduler_->now();
-  arrivals_.push_back(Arrival{frame_uid, rx_power_dbm, rx_power_mw, now});
+  arrivals_.push_back(Arrival{frame_uid, rx_power_dbm, rx_power_mw, now, start_sequence});
   if (lock_) {
-    note_interference_change();
+    if (far_source_ != nullptr) {
+      note_change(frame_uid, true, rx_power_mw, start_sequence);
+    } else {
+      note_interference_change();
+    }
   } else if (!transmitting_) {
     arrivals_.back().in_window = true;
-    if (!window_open_) open_window(start_sequence);
+    if (!window_open_) open_window(now, start_sequence);
     arm_window_if_needed(rx_power_dbm >= cca_threshold_dbm_);
   }
   // No carrier-sense change is possible here: locked or transmitting, the medium is busy anyway,
@@ -259,6 +375,8 @@ void Phy::signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_p
 void Phy::end_detection_window() {
   // Armed timers only: a transmission cancels the window, and a lock begins only here.
   window_open_ = false;
+  // The far signals not handed over that started in the window joined it, and it is over.
+  window_synced_ = scheduler_->current_key();
   detect_preamble();
   leave_window();
   // Detected (locked) or not, the window's signals are sensed from now on.
@@ -271,13 +389,122 @@ void Phy::detect_preamble() {
     if (a.in_window && (best == nullptr || a.rx_power_mw > best->rx_power_mw)) best = &a;
   }
   if (best == nullptr || best->rx_power_dbm < cca_threshold_dbm_) return;
-  const double interference = total_mw() - best->rx_power_mw;
+  double total = 0.0;
+  if (far_source_ != nullptr) {
+    // The far signals arriving now that were not handed over count as well.
+    const EventKey now = scheduler_->current_key();
+    far_scratch_.clear();
+    far_source_->far_signals_during(self_, now, now, far_scratch_);
+    total = total_mw_with(far_scratch_);
+  } else {
+    total = total_mw();
+  }
+  const double interference = total - best->rx_power_mw;
   // Quiet signals count here, but are not kept in the lock's steps: finish_lock adds them then.
   const double sinr_db =
       10.0 * std::log10(best->rx_power_mw / (noise_mw_ + interference + quiet_mw_now()));
   if (sinr_db < config_.preamble_snr_db) return;
-  lock_ = Lock{best->frame_uid, best->rx_power_mw, best->start, {}};
+  lock_ = std::move(spare_lock_);  // its buffers, emptied
+  lock_->frame_uid = best->frame_uid;
+  lock_->power_mw = best->rx_power_mw;
+  lock_->start = best->start;
+  lock_->interference_mw.clear();
+  lock_->at_detection.clear();
+  lock_->changes.clear();
+  lock_->far.clear();
   lock_->interference_mw.emplace_back(scheduler_->now(), std::max(interference, 0.0));
+  if (far_source_ != nullptr) {
+    lock_->detected = scheduler_->current_key();
+    lock_->far = far_scratch_;  // the far signals arriving at detection
+    for (const Arrival& a : arrivals_) {
+      lock_->at_detection.push_back(
+          Known{EventKey{a.start, a.start_sequence}, a.rx_power_mw, a.frame_uid});
+    }
+  }
+}
+
+double Phy::total_mw_with(std::vector<FarSignal>& far) const {
+  std::sort(far.begin(), far.end(),
+            [](const FarSignal& a, const FarSignal& b) { return a.start < b.start; });
+  double total = 0.0;
+  auto next_far = far.begin();
+  for (const Arrival& a : arrivals_) {
+    const EventKey start{a.start, a.start_sequence};
+    for (; next_far != far.end() && next_far->start < start; ++next_far) {
+      total += next_far->power_mw;
+    }
+    total += a.rx_power_mw;
+  }
+  for (; next_far != far.end(); ++next_far) total += next_far->power_mw;
+  return total;
+}
+
+void Phy::note_change(std::uint64_t frame_uid, bool start, double rx_power_mw,
+                      std::uint64_t start_sequence) {
+  const EventKey now = scheduler_->current_key();
+  const EventKey arrival_start = start ? now : EventKey{};
+  lock_->changes.push_back(Change{
+      now, start,
+      Known{start ? EventKey{now.time, start_sequence} : arrival_start, rx_power_mw, frame_uid}});
+}
+
+void Phy::rebuild_interference(Lock& lock) {
+  const EventKey now = scheduler_->current_key();
+  std::vector<FarSignal>& far = far_scratch_;
+  far.clear();
+  // Those arriving at detection and those handed over since are in lock.far; the others started
+  // since.
+  far_source_->far_starts(self_, lock.detected, now, far);
+  far.insert(far.end(), lock.far.begin(), lock.far.end());
+  // A far signal may be listed twice (arriving at detection, then handed over).
+  std::sort(far.begin(), far.end(),
+            [](const FarSignal& a, const FarSignal& b) { return a.frame_uid < b.frame_uid; });
+  far.erase(std::unique(
+                far.begin(), far.end(),
+                [](const FarSignal& a, const FarSignal& b) { return a.frame_uid == b.frame_uid; }),
+            far.end());
+  // The arrivals at detection, then every start and end until now, in key order.
+  std::vector<Known>& active = lock.at_detection;
+  std::vector<Change>& changes = lock.changes;
+  for (const FarSignal& f : far) {
+    const Known arrival{f.start, f.power_mw, f.frame_uid};
+    if (f.start < lock.detected) {
+      if (lock.detected < f.end) active.push_back(arrival);
+    } else if (f.start < now) {
+      changes.push_back(Change{f.start, true, arrival});
+    }
+    if (lock.detected < f.end && f.end < now) changes.push_back(Change{f.end, false, arrival});
+  }
+  const auto by_start = [](const Known& a, const Known& b) { return a.start < b.start; };
+  std::sort(active.begin(), active.end(), by_start);
+  std::stable_sort(changes.begin(), changes.end(),
+                   [](const Change& a, const Change& b) { return a.key < b.key; });
+  const auto interference = [&] {
+    double total = 0.0;  // in arrival order, as one list of arrivals would sum
+    for (const Known& a : active) total += a.power_mw;
+    return std::max(total - lock.power_mw, 0.0);
+  };
+  lock.interference_mw.clear();
+  lock.interference_mw.emplace_back(lock.detected.time, interference());
+  for (std::size_t i = 0; i < changes.size();) {
+    const EventKey key = changes[i].key;
+    // The same end may be recorded twice (as it ran, and from the source): one step per key.
+    for (; i < changes.size() && changes[i].key == key; ++i) {
+      const Change& change = changes[i];
+      const auto it = std::find_if(active.begin(), active.end(), [&](const Known& a) {
+        return a.frame_uid == change.arrival.frame_uid;
+      });
+      if (change.start) {
+        if (it == active.end()) {
+          active.insert(std::upper_bound(active.begin(), active.end(), change.arrival, by_start),
+                        change.arrival);
+        }
+      } else if (it != active.end()) {
+        active.erase(it);
+      }
+    }
+    lock.interference_mw.emplace_back(key.time, interference());
+  }
 }
 
 void Phy::note_interference_change() {
@@ -286,31 +513,46 @@ void Phy::note_interference_change() {
 }
 
 void Phy::signal_end(const Frame& frame, double rx_power_dbm) {
-  if (sinr_model()) close_passed_window();
+  if (sinr_model()) {
+    if (!lock_ || lock_->frame_uid != frame.uid) {
+      end_unlocked_signal(frame.uid);
+      return;
+    }
+    close_passed_window();
+    std::erase_if(arrivals_, [&](const Arrival& a) { return a.frame_uid == frame.uid; });
+    finish_lock(frame, rx_power_dbm);
+    return;
+  }
   const auto it = std::find_if(arrivals_.begin(), arrivals_.end(),
                                [&](const Arrival& a) { return a.frame_uid == frame.uid; });
   if (it == arrivals_.end()) return;  // not tracked: nothing to decide
   arrivals_.erase(it);
+  const bool received = rx_power_dbm >= config_.rx_sensitivity_dbm;
+  // The medium goes idle before the frame goes up, as a radio's carrier sense drops at the end
+  // of the frame and the MAC then processes it.
+  report_busy_change();
+  if (received) {
+    // No noise or interference is modelled: the SINR is unbounded.
+    listener_.phy_receive(frame, RxInfo{rx_power_dbm, std::numeric_limits<double>::infinity()});
+  } else {
+    listener_.phy_receive_error();
+  }
+}
 
-  if (!sinr_model()) {
-    const bool received = rx_power_dbm >= config_.rx_sensitivity_dbm;
-    // The medium goes idle before the frame goes up, as a radio's carrier sense drops at the end
-    // of the frame and the MAC then processes it.
-    report_busy_change();
-    if (received) {
-      // No noise or interference is modelled: the SINR is unbounded.
-      listener_.phy_receive(frame, RxInfo{rx_power_dbm, std::numeric_limits<double>::infinity()});
+void Phy::end_unlocked_signal(std::uint64_t frame_uid) {
+  close_passed_window();
+  const auto it = std::find_if(arrivals_.begin(), arrivals_.end(),
+                               [&](const Arrival& a) { return a.frame_uid == frame_uid; });
+  if (it == arrivals_.end()) return;  // not tracked: nothing to decide
+  const Arrival ended = *it;
+  arrivals_.erase(it);
+  if (lock_) {
+    if (far_source_ != nullptr) {
+      note_change(frame_uid, false, ended.rx_power_mw, ended.start_sequence);
     } else {
-      listener_.phy_receive_error();
+      note_interference_change();
     }
-    return;
   }
-
-  if (lock_ && lock_->frame_uid == frame.uid) {
-    finish_lock(frame, rx_power_dbm);
-    return;
-  }
-  if (lock_) note_interference_change();
   // A signal's end lowers the sensed power: an idle medium stays idle (a float sum of positive
   // terms never grows when one is dropped; a passed window closed above changed nothing, see
   // signal_start).
@@ -346,9 +588,9 @@ double Phy::success_probability(const Lock& lock, const Frame& frame, SimTime en
 }
 
 void Phy::finish_lock(const Frame& frame, double rx_power_dbm) {
-  Lock lock = std::move(*lock_);
-  lock_.reset();
+  Lock& lock = *lock_;
   const SimTime now = scheduler_->now();
+  if (far_source_ != nullptr) rebuild_interference(lock);
   add_quiet_interference(lock, now);
   const double p_success = success_probability(lock, frame, now, true);
   RandomStream draw(derive_seed(seed_, {frame.uid}));
@@ -360,22 +602,27 @@ void Phy::finish_lock(const Frame& frame, double rx_power_dbm) {
     worst_interference = std::max(worst_interference, chunk.second);
   }
   const double sinr_db = 10.0 * std::log10(lock.power_mw / (noise_mw_ + worst_interference));
-  report_busy_change();
-  if (received) {
-    listener_.phy_receive(frame, RxInfo{rx_power_dbm, sinr_db});
-    return;
-  }
-  if (worst_interference > 0.0 &&
-      success_probability(lock, frame, now, false) >= kCollisionAloneSuccess) {
-    listener_.phy_collision(frame);
-  }
+  const bool collision = !received && worst_interference > 0.0 &&
+                         success_probability(lock, frame, now, false) >= kCollisionAloneSuccess;
   // ns-3.37 reports a reception error (RxEndError, after which the MAC uses EIFS) only when the
   // payload fails; a failed PLCP header aborts the reception during its CCA-busy phase, and the
   // MAC sees a busy medium only. The same draw decides: the header failed if it exceeds the
   // header's own success probability (which bounds the frame's).
   const SimTime header_end = lock.start + ofdm::kPreambleDuration + ofdm::kHeaderDuration;
-  if (draw_value >= success_probability(lock, frame, std::min(header_end, now), true)) return;
-  listener_.phy_receive_error();
+  const bool header_received =
+      !received && draw_value < success_probability(lock, frame, std::min(header_end, now), true);
+  // Decided: the lock's buffers are kept for the next one, before the listener runs.
+  spare_lock_ = std::move(lock);
+  lock_.reset();
+  // Far signals that started during the reception opened no window.
+  window_synced_ = scheduler_->current_key();
+  report_busy_change();
+  if (received) {
+    listener_.phy_receive(frame, RxInfo{rx_power_dbm, sinr_db});
+    return;
+  }
+  if (collision) listener_.phy_collision(frame);
+  if (header_received) listener_.phy_receive_error();
 }
 
 }  // namespace swarmnet

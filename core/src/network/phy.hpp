@@ -74,6 +74,36 @@ struct QuietSignal {
   double power_mw;
 };
 
+// A far signal (is_far_signal) as it reaches one receiver: its power, and the keys the channel
+// reserved for its first and last bit when the frame was sent.
+struct FarSignal {
+  std::uint64_t frame_uid;
+  double power_dbm;
+  double power_mw;
+  EventKey start;
+  EventKey end;
+};
+
+// Where a sinr PHY learns of the far signals it was not handed as events (the channel), and
+// tells when it needs them all as events.
+class FarSignalSource {
+ public:
+  // far_starts answers for start keys at most this long before now.
+  static constexpr SimTime kFarStartHistory{1'000'000};
+
+  // Appends to `out`, by start key, the far signals reaching `receiver` that it was not handed as
+  // events and whose start key lies strictly between `from` and `to`.
+  virtual void far_starts(NodeId receiver, EventKey from, EventKey to,
+                          std::vector<FarSignal>& out) const = 0;
+  // Appends to `out` (in no order) the far signals reaching `receiver` that it was not handed as
+  // events and that arrive during (from, to): start before `to`, end after `from`.
+  virtual void far_signals_during(NodeId receiver, EventKey from, EventKey to,
+                                  std::vector<FarSignal>& out) const = 0;
+
+ protected:
+  ~FarSignalSource() = default;
+};
+
 // Where a sinr PHY finds the quiet signals reaching it (the channel).
 class QuietSignalSource {
  public:
@@ -109,6 +139,10 @@ double noise_floor_dbm(const PhyConfig& config);
 // interference_floor_db.
 double audibility_threshold_dbm(const PhyConfig& config);
 
+// sinr model: a signal that can be neither detected (below cca_threshold_dbm) nor, alone, make
+// the medium busy (below both carrier-sense thresholds). See Phy::begin_far_events.
+bool is_far_signal(const PhyConfig& config, double rx_power_dbm, double rx_power_mw);
+
 // The weakest signal the channel hands to a PHY as an event (signal_start/signal_end): the
 // sinr model's sensing threshold, at least the audibility threshold. Signals between the two are
 // quiet (see above). Threshold model: the sensitivity.
@@ -131,6 +165,9 @@ class Phy {
   // sinr model: where to find the quiet signals reaching this PHY, which is node `self`. Without
   // a source the PHY knows only the signals handed to it.
   void set_quiet_signal_source(const QuietSignalSource* source, NodeId self);
+  // sinr model: where to find the far signals this PHY, node `self`, is not handed as events.
+  // Without a source every signal comes as events.
+  void set_far_signal_source(FarSignalSource* source, NodeId self);
 
   // The node's own transmission. start_transmission() while transmitting is a MAC bug and throws
   // std::logic_error.
@@ -149,22 +186,85 @@ class Phy {
   void signal_start(std::uint64_t frame_uid, double rx_power_dbm);
   void signal_end(const Frame& frame, double rx_power_dbm);
 
+  // Far signals (sinr model, with a far-signal source). A far signal changes what a node does
+  // only (a) while it is locked on a frame (interference), (b) at the end of a preamble-detection
+  // window it judges (interference), (c) when it opens or joins a detection window that a
+  // stronger signal then joins (the window's end), and (d) in carrier sense, which it can change
+  // only when the far signals arriving at once reach a carrier-sense threshold on their own: a
+  // sensed signal that is not far keeps the medium busy by itself, and an unsensed one in an
+  // open window has armed it. So the channel hands far signals over as events only while the PHY
+  // is listening (locked, or with an armed window: a and b) or the far signals still on the air
+  // at this node could sum to the threshold (d; the channel keeps that upper bound per node).
+  // Between those times they are not handed over at all, and nothing the node does depends on
+  // them except (c): when a signal starts at an idle PHY, the PHY first asks the source for the
+  // far signals that started since it last looked and replays the windows they opened
+  // (sync_window). The result is the same as with every signal as events, to the bit.
+  //
+  // From now on every far signal comes as events. `signals` (by start key) are those this PHY was
+  // not handed that end after far_history_start(): those still to end become events (those
+  // already arriving join the arrivals in their place), and a reception under way keeps them all
+  // for its interference.
+  void begin_far_events(const std::vector<FarSignal>& signals);
+  // The reception's start if one is under way, else now.
+  [[nodiscard]] EventKey far_history_start() const;
+  // One more far signal as events (its start is still to come).
+  void far_signal_event(const FarSignal& signal);
+  // Far signals are no longer handed over (the ones handed over still run).
+  void end_far_events();
+
  private:
   struct Arrival {
     std::uint64_t frame_uid;
     double rx_power_dbm;
     double rx_power_mw = 0.0;
     SimTime start{};
+    std::uint64_t start_sequence = 0;
     bool in_window = false;  // its preamble started in the open window: not carrier-sensed yet
   };
+  // A far signal handed over as events: schedules its start (if still to come) and its end.
+  void schedule_far_signal(const FarSignal& signal);
+  // A signal's end when it is not the locked frame's (all of it for a far signal).
+  void end_unlocked_signal(std::uint64_t frame_uid);
+  // Replays the detection windows opened by far signals not handed over, up to now.
+  void sync_window();
+  // The arrivals' total power with the far signals `far` (not handed over) among them, summed in
+  // arrival order as one list of arrivals would be.
+  [[nodiscard]] double total_mw_with(std::vector<FarSignal>& far) const;
+  // With a far-signal source: records an arrival's start or end during a reception (the
+  // interference steps are rebuilt at its end, when the far signals are known).
+  void note_change(std::uint64_t frame_uid, bool start, double rx_power_mw,
+                   std::uint64_t start_sequence);
+
   void leave_window();  // every arrival's in_window cleared
   // sinr: the frame the PHY is locked on, and the interference it has seen since.
+  // An arrival as the steps' rebuild sees it.
+  struct Known {
+    EventKey start;
+    double power_mw;
+    std::uint64_t frame_uid;
+  };
+  // An arrival's start or end during a reception.
+  struct Change {
+    EventKey key;
+    bool start;
+    Known arrival;
+  };
   struct Lock {
     std::uint64_t frame_uid;
     double power_mw;
     SimTime start;
     std::vector<std::pair<SimTime, double>> interference_mw;  // from each time on
+    // With a far-signal source (see rebuild_interference):
+    EventKey detected{};
+    std::vector<Known> at_detection;  // the arrivals when it was detected
+    std::vector<Change> changes;
+    // The far signals not handed over that arrived at detection, and those handed over since
+    // (with their past).
+    std::vector<FarSignal> far;
   };
+  // Rebuilds the reception's interference steps from the arrivals when it was detected, the
+  // changes since, and the far signals that arrived meanwhile.
+  void rebuild_interference(Lock& lock);
 
   [[nodiscard]] bool sinr_model() const { return sinr_; }
   [[nodiscard]] double total_mw() const;
@@ -172,12 +272,14 @@ class Phy {
   // transmission).
   [[nodiscard]] bool senses_busy(double sensed_mw) const;
   void report_busy_change();
-  void open_window(std::uint64_t sequence);
+  void open_window(SimTime start, std::uint64_t sequence);
   // Arms the open window's timer if its end would detect a frame (`strong_candidate`: one that
   // just joined is strong enough) or change carrier sense.
   void arm_window_if_needed(bool strong_candidate);
   // Closes an open, unarmed window whose end has passed (its end changed nothing).
   void close_passed_window();
+  // The same at key `at`: an unarmed window whose end key is before it closes.
+  void close_window_before(EventKey at);
   void close_window();
   void end_detection_window();
   // Locks on the strongest signal of the window if it is detected.
@@ -215,11 +317,17 @@ class Phy {
   std::uint64_t window_sequence_ = 0;
   TimerId detection_timer_ = kNoTimer;  // the armed window's timer
   std::optional<Lock> lock_;
+  Lock spare_lock_{};  // the last lock's buffers, reused by the next
   // Colder state.
   PhyConfig config_;
   std::uint64_t seed_;
   const QuietSignalSource* quiet_source_ = nullptr;
+  FarSignalSource* far_source_ = nullptr;
   NodeId self_ = kNoNode;
+  bool far_events_ = false;  // the source hands every far signal over as events
+  // The key up to which the window state includes the far signals not handed over.
+  EventKey window_synced_{};
+  std::vector<FarSignal> far_scratch_;
   // Scratch for quiet-signal queries and add_quiet_interference (no allocation per reception).
   std::vector<QuietSignal> quiet_;
   std::vector<SimTime> quiet_times_;

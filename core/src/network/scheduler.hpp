@@ -111,6 +111,16 @@ class EventCallback {
   const Ops* ops_ = nullptr;
 };
 
+// Where an event runs: its time, then the sequence number it was scheduled (or reserved) with.
+struct EventKey {
+  SimTime time{};
+  std::uint64_t sequence = 0;
+  friend bool operator<(const EventKey& a, const EventKey& b) {
+    return a.time != b.time ? a.time < b.time : a.sequence < b.sequence;
+  }
+  friend bool operator==(const EventKey& a, const EventKey& b) = default;
+};
+
 class Scheduler {
  public:
   using Callback = EventCallback;
@@ -149,6 +159,11 @@ class Scheduler {
   [[nodiscard]] bool has_passed(SimTime time, std::uint64_t sequence) const {
     return earlier(Entry{time, sequence, 0, 0},
                    Entry{now_, running_ ? current_sequence_ : 0, 0, 0});
+  }
+  // The key of the moment now: the running event's, or between runs (now(), 0). Exactly the keys
+  // before it have passed (has_passed).
+  [[nodiscard]] EventKey current_key() const {
+    return EventKey{now_, running_ ? current_sequence_ : 0};
   }
   // Cancels a pending event. A fired, cancelled, unknown or kNoTimer id is ignored.
   void cancel(TimerId timer);

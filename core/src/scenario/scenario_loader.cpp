@@ -147,6 +147,8 @@ Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>
   s.network.phy.interference_floor_db = phy["interference_floor_db"].as<double>();
   s.network.phy.sensing_floor_db = phy["sensing_floor_db"].as<double>();
   s.network.channel.cutoff = network["channel"]["cutoff"].as<bool>();
+  s.network.channel.lazy_far_signals =
+      network["channel"]["far_signals"].as<std::string>() == "lazy";
   s.network.mac = plugin("network.mac");
   s.network.routing = plugin("network.routing");
   if (network["arp"].as<std::string>() == "static") s.network.arp.reset();

@@ -224,6 +224,13 @@ const KeySpec& scenario_schema() {
       map_key("channel", "The shared medium.", {
         boolean_key("cutoff", "Visit only nodes that could possibly hear a frame (exact; turn off "
                               "to check).").defaults("true"),
+        choice_key("far_signals", {"lazy", "events"},
+                   "sinr model: lazy hands a signal too weak to be detected or sensed alone to a "
+                   "receiver only when it can matter there (receiving, judging a preamble, or "
+                   "when such signals could add up to the carrier-sense threshold); events hands "
+                   "every signal over as events. Same results to the bit; lazy is faster "
+                   "(docs/performance.md). Fading models that draw per frame always use events.")
+            .defaults("lazy"),
       }),
       plugin_key("mac", PluginKind::mac, "Medium access control.").plugin_default("ideal_mac"),
       plugin_key("routing", PluginKind::routing, "Routing protocol.").need(),

@@ -1,0 +1,76 @@
+// A transmitter's receivers as the channel computes them for a frame (or for every frame of a
+// step when links are reused): one link per receiver that gets the frame at all, in arrival order.
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "swarmnet/ids.hpp"
+#include "swarmnet/units.hpp"
+
+namespace swarmnet {
+
+class Phy;
+
+struct ChannelLink {
+  SimTime delay;
+  NodeId receiver;
+  bool far;  // is_far_signal: the receiver gets it as a FarSignal, not as events (far_signals.hpp)
+  Phy* phy;  // the receiver's, kept beside the link: one cache line per receiver, not two
+  double power_dbm;
+  double power_mw;
+  std::int64_t far_units;  // far links: power_mw in the far-signal bookkeeping's units, rounded up
+};
+
+struct ChannelLinks {
+  std::vector<ChannelLink> links;  // by (delay, receiver): arrival order
+  // The far links' receivers, ascending, with each link's index; and which receivers have one,
+  // as bits with the count of those in the words before: far_link() finds a receiver's link
+  // with a word test and a popcount (a question about a frame is asked about many receivers).
+  std::vector<std::pair<NodeId, std::uint32_t>> far_by_receiver;
+  std::vector<std::uint64_t> far_bits;
+  std::vector<std::uint32_t> far_bits_before;
+
+  void clear() {
+    links.clear();
+    far_by_receiver.clear();
+  }
+  // Fills the far-link index from links, for receivers numbered below the size of `scratch`
+  // (any content; left changed).
+  void index_far(std::vector<std::uint32_t>& scratch) {
+    far_bits.assign((scratch.size() + 63) / 64, 0);
+    for (std::uint32_t i = 0; i < links.size(); ++i) {
+      if (!links[i].far) continue;
+      far_bits[links[i].receiver / 64] |= bit(links[i].receiver);
+      scratch[links[i].receiver] = i;
+    }
+    // In receiver order, by walking the bits.
+    far_by_receiver.clear();
+    far_bits_before.resize(far_bits.size());
+    for (std::size_t w = 0; w < far_bits.size(); ++w) {
+      far_bits_before[w] = static_cast<std::uint32_t>(far_by_receiver.size());
+      for (std::uint64_t bits = far_bits[w]; bits != 0; bits &= bits - 1) {
+        const auto receiver = static_cast<NodeId>(w * 64 + std::countr_zero(bits));
+        far_by_receiver.emplace_back(receiver, scratch[receiver]);
+      }
+    }
+  }
+  // The index of `receiver`'s far link, or links.size() if it has none.
+  [[nodiscard]] std::size_t far_link(NodeId receiver) const {
+    const std::size_t word = receiver / 64;
+    if (word >= far_bits.size() || (far_bits[word] & bit(receiver)) == 0) return links.size();
+    const std::uint32_t rank =
+        far_bits_before[word] +
+        static_cast<std::uint32_t>(std::popcount(far_bits[word] & (bit(receiver) - 1)));
+    return far_by_receiver[rank].second;
+  }
+
+ private:
+  static std::uint64_t bit(NodeId receiver) { return std::uint64_t{1} << (receiver % 64); }
+};
+
+}  // namespace swarmnet
