@@ -154,6 +154,8 @@ TEST(Ns3Engine, WhatNs3CannotRunIsRefusedBeforeTheRunWithWhereAndWhy) {
       {"network.phy.sensing_floor_db=-20", "--set network.phy.sensing_floor_db",
        "has no ns-3 counterpart"},
       {"network.channel.cutoff=false", "--set network.channel.cutoff", "has no ns-3 counterpart"},
+      {"network.channel.far_signals=events", "--set network.channel.far_signals",
+       "has no ns-3 counterpart"},
       {"network.routing.params.link_layer_feedback=false",
        "--set network.routing.params.link_layer_feedback",
        "ns-3's AODV takes layer-2 feedback whenever ARP resolved the neighbour"},

@@ -126,6 +126,7 @@ TEST(ScenarioLoader, OptionalKeysTakeTheirDocumentedDefaults) {
   EXPECT_EQ(s.network.phy.tx_power_dbm, 16.0206);
   EXPECT_EQ(s.network.phy.rx_sensitivity_dbm, -96.0);
   EXPECT_TRUE(s.network.channel.cutoff);
+  EXPECT_TRUE(s.network.channel.lazy_far_signals);
   EXPECT_EQ(s.network.mac.name, "ideal_mac");
   EXPECT_EQ(s.network.mac.params.real("bitrate_bps"), 6.0e6);
   EXPECT_EQ(s.network.routing.params.integer("ttl"), 32);

@@ -96,7 +96,10 @@ class FarSignalSource {
   virtual void far_starts(NodeId receiver, EventKey from, EventKey to,
                           std::vector<FarSignal>& out) const = 0;
   // Appends to `out` (in no order) the far signals reaching `receiver` that it was not handed as
-  // events and that arrive during (from, to): start before `to`, end after `from`.
+  // events and that arrive during (from, to): start before `to`, end after `from`. Answers for
+  // `from` no earlier than kFarStartHistory before now, or than the start of the reception
+  // under way; signals that ended before the receiver last got far signals as events are not
+  // listed (nothing later depends on them).
   virtual void far_signals_during(NodeId receiver, EventKey from, EventKey to,
                                   std::vector<FarSignal>& out) const = 0;
 

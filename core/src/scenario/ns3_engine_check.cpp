@@ -182,6 +182,11 @@ void check_phy(KeyFacts& keys) {
                 "has no ns-3 counterpart (it tunes SwarmNet's own channel)",
                 "its default (true) with network.engine: ns3");
   }
+  if (keys.text(KeyPath({"network", "channel", "far_signals"})) == "events") {
+    keys.refuse(KeyPath({"network", "channel", "far_signals"}),
+                "has no ns-3 counterpart (it tunes SwarmNet's own channel)",
+                "its default (lazy) with network.engine: ns3");
+  }
 }
 
 // The MAC's rates must be modes of the standard, unless a mode is named outright.
