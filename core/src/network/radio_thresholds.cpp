@@ -1,0 +1,36 @@
+#include "network/radio_thresholds.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "swarmnet/units.hpp"
+
+namespace swarmnet {
+
+double noise_floor_dbm(const PhyConfig& config) {
+  return -174.0 + 10.0 * std::log10(config.bandwidth_hz) + config.noise_figure_db;
+}
+
+double audibility_threshold_dbm(const PhyConfig& config) {
+  if (config.model == PhyModel::sinr) {
+    return noise_floor_dbm(config) + config.interference_floor_db;
+  }
+  return config.rx_sensitivity_dbm;
+}
+
+bool is_far_signal(const PhyConfig& config, double rx_power_dbm, double rx_power_mw) {
+  if (config.model != PhyModel::sinr) return false;
+  const double sensing_mw = std::min(dbm_to_milliwatts(config.cca_threshold_dbm),
+                                     dbm_to_milliwatts(config.energy_detection_dbm));
+  return rx_power_dbm < config.cca_threshold_dbm && rx_power_mw < sensing_mw;
+}
+
+double event_threshold_dbm(const PhyConfig& config) {
+  if (config.model == PhyModel::sinr) {
+    return std::max(audibility_threshold_dbm(config),
+                    config.cca_threshold_dbm + config.sensing_floor_db);
+  }
+  return config.rx_sensitivity_dbm;
+}
+
+}  // namespace swarmnet

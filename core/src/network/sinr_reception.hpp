@@ -1,0 +1,168 @@
+// The sinr reception model (network/phy.hpp describes it): 802.11a OFDM reception as ns-3.37's
+// YansWifiPhy does it with its defaults (preamble detection windows, no capture, chunked SINR
+// with the NIST error model, carrier sense on the summed power), with the far signals it is not
+// handed as events asked for when they matter (far_signals.hpp) and the opt-in quiet signals.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "network/network_settings.hpp"
+#include "network/phy_core.hpp"
+#include "network/scheduler.hpp"
+#include "network/signal_sources.hpp"
+#include "swarmnet/ids.hpp"
+#include "swarmnet/packet.hpp"
+
+namespace swarmnet {
+
+class SinrReception final : public PhyCore {
+ public:
+  // `seed` seeds the reception draws.
+  SinrReception(const PhyConfig& config, PhyListener& listener, Scheduler& scheduler,
+                std::uint64_t seed);
+
+  void signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_power_mw,
+                    std::uint64_t start_sequence) override;
+  void signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_power_mw) override;
+  void signal_end(const Frame& frame, double rx_power_dbm) override;
+
+  // Where to find the quiet signals reaching this PHY, which is node `self`. Without a source
+  // the PHY knows only the signals handed to it.
+  void set_quiet_signal_source(const QuietSignalSource* source, NodeId self);
+  // Where to find the far signals this PHY, node `self`, is not handed as events. Without a
+  // source every signal comes as events.
+  void set_far_signal_source(FarSignalSource* source, NodeId self);
+  // Far signals: see Phy::begin_far_events (network/phy.hpp).
+  void begin_far_events(const std::vector<FarSignal>& signals);
+  [[nodiscard]] EventKey far_history_start() const;
+  void far_signal_event(const FarSignal& signal);
+  void end_far_events();
+
+ protected:
+  [[nodiscard]] bool senses_busy() const override;
+  [[nodiscard]] bool receiving() const override { return lock_.has_value(); }
+  void transmission_started() override;
+  void transmission_ended() override;
+
+ private:
+  struct Arrival {
+    std::uint64_t frame_uid;
+    double rx_power_dbm;
+    double rx_power_mw = 0.0;
+    SimTime start{};
+    std::uint64_t start_sequence = 0;
+    bool in_window = false;  // its preamble started in the open window: not carrier-sensed yet
+  };
+  // A far signal handed over as events: schedules its start (if still to come) and its end.
+  void schedule_far_signal(const FarSignal& signal);
+  // A signal's end when it is not the locked frame's (all of it for a far signal).
+  void end_unlocked_signal(std::uint64_t frame_uid);
+  // Replays the detection windows opened by far signals not handed over, up to now.
+  void sync_window();
+  // The arrivals' total power with the far signals `far` (not handed over) among them, summed in
+  // arrival order as one list of arrivals would be.
+  [[nodiscard]] double total_mw_with(std::vector<FarSignal>& far) const;
+  // With a far-signal source: records an arrival's start or end during a reception (the
+  // interference steps are rebuilt at its end, when the far signals are known).
+
+  void leave_window();  // every arrival's in_window cleared
+  // An arrival as the steps' rebuild sees it.
+  struct Known {
+    EventKey start;
+    double power_mw = 0.0;
+    std::uint64_t frame_uid = 0;
+  };
+  // An arrival's start or end during a reception.
+  struct Change {
+    EventKey key;
+    bool start = false;
+    Known arrival;
+  };
+  // The frame the PHY is locked on, and the interference it has seen since.
+  struct Lock {
+    std::uint64_t frame_uid = 0;
+    double power_mw = 0.0;
+    SimTime start{};
+    std::vector<std::pair<SimTime, double>> interference_mw;  // from each time on
+    // With a far-signal source (see rebuild_interference):
+    EventKey detected{};
+    std::vector<Known> at_detection;  // the arrivals when it was detected
+    std::vector<Change> changes;
+    // The far signals not handed over that arrived at detection, and those handed over since
+    // (with their past).
+    std::vector<FarSignal> far;
+  };
+  // With a far-signal source: records an arrival's start or end during a reception (the
+  // interference steps are rebuilt at its end, when the far signals are known).
+  void note_change(bool start, const Known& arrival);
+  // Rebuilds the reception's interference steps from the arrivals when it was detected, the
+  // changes since, and the far signals that arrived meanwhile.
+  void rebuild_interference(Lock& lock);
+
+  [[nodiscard]] double total_mw() const;
+  // Carrier sense's verdict on this much sensed power (medium_busy() without the lock and the
+  // transmission).
+  [[nodiscard]] bool senses_power(double sensed_mw) const;
+  void open_window(SimTime start, std::uint64_t sequence);
+  // Arms the open window's timer if its end would detect a frame (`strong_candidate`: one that
+  // just joined is strong enough) or change carrier sense.
+  void arm_window_if_needed(bool strong_candidate);
+  // Closes an open, unarmed window whose end has passed (its end changed nothing).
+  void close_passed_window();
+  // The same at key `at`: an unarmed window whose end key is before it closes.
+  void close_window_before(EventKey at);
+  void close_window();
+  void end_detection_window();
+  // Locks on the strongest signal of the window if it is detected.
+  void detect_preamble();
+  void note_interference_change();
+  void finish_lock(const Frame& frame, double rx_power_dbm);
+  // Total power of the quiet signals arriving now.
+  [[nodiscard]] double quiet_mw_now();
+  // The lock's interference steps with the quiet signals that overlapped it added in.
+  void add_quiet_interference(Lock& lock, SimTime end);
+  [[nodiscard]] double success_probability(const Lock& lock, const Frame& frame, SimTime end,
+                                           bool with_interference) const;
+
+  // Hot state first: for a signal that is not received (most of them) signal_start and
+  // signal_end read only these first cache lines; the configuration and the reception-only state
+  // come after them.
+  Scheduler* scheduler_;
+  // The detection window is kept without a timer while its end can change nothing
+  // (no candidate strong enough to detect, no carrier-sense change): at a 120 m range most
+  // arrivals are far too weak, and a timer per idle receiver per frame was a third of all events.
+  // Its key (end, reserved sequence number) is kept, and the timer is armed at that key as soon
+  // as the end matters (arm_window_if_needed), so everything runs in the order it would with a
+  // timer per window; a window that passed without one is closed at the PHY's next event.
+  bool window_open_ = false;
+  double cca_threshold_dbm_;
+  double noise_mw_;
+  double energy_detection_mw_;
+  double cca_threshold_mw_;
+  // Signals currently arriving, in arrival order: the far ones only when handed over as events.
+  std::vector<Arrival> arrivals_;
+  SimTime window_end_{};
+  std::uint64_t window_sequence_ = 0;
+  TimerId detection_timer_ = kNoTimer;  // the armed window's timer
+  std::optional<Lock> lock_;
+  Lock spare_lock_{};  // the last lock's buffers, reused by the next
+  // Colder state.
+  PhyConfig config_;
+  std::uint64_t seed_;
+  const QuietSignalSource* quiet_source_ = nullptr;
+  FarSignalSource* far_source_ = nullptr;
+  NodeId self_ = kNoNode;
+  bool far_events_ = false;  // the source hands every far signal over as events
+  // The key up to which the window state includes the far signals not handed over.
+  EventKey window_synced_{};
+  std::vector<FarSignal> far_scratch_;
+  // Scratch for quiet-signal queries and add_quiet_interference (no allocation per reception).
+  std::vector<QuietSignal> quiet_;
+  std::vector<SimTime> quiet_times_;
+  std::vector<std::pair<SimTime, double>> quiet_steps_;
+};
+
+}  // namespace swarmnet
