@@ -549,5 +549,50 @@ TEST(FarSignalEffects, RandomBusyNeighbourhoodsGiveTheSameLogsLazyAndAsEvents) {
   EXPECT_GT(busy_reports, 500U);
 }
 
+TEST(FarSignalEffects, DenseFarStartsBeforeAFrameOpenTheSameWindowsLazyAndAsEvents) {
+  // Far starts 1.5 to 3.9 us apart for 1.2 ms at node 0 (each about -97 dBm, short frames, never
+  // enough at once to reach the carrier-sense threshold), with one pause of 6 us 50 us before a
+  // frame from a near node. To replay the detection windows those starts opened, the lazy PHY
+  // must look back to a start more than 4 us after the one before it (the one after the pause;
+  // it once looked only at the earliest start found, and gave up after 1 ms): the windows, the
+  // detection and the reception must be those of the run with every signal as events.
+  PluginLoader loader;
+  RandomStream random(4242);
+  constexpr int kFar = 24;
+  std::vector<Vec2> positions{kCenter, at_power(kCenter, -60.0, 0.0)};
+  for (int k = 0; k < kFar; ++k) {
+    positions.push_back(at_power(kCenter, -97.0 - 0.1 * k, 0.3 + 0.25 * k));
+  }
+  struct Send {
+    NodeId node;
+    SimTime at;
+  };
+  std::vector<Send> sends;
+  std::vector<SimTime> next_free(positions.size(), kTimeZero);
+  SimTime t = us(10);
+  for (int i = 0; t < us(1210); ++i) {
+    const auto node = static_cast<NodeId>(2 + i % kFar);
+    t = std::max(t, next_free[node]);
+    sends.push_back(Send{node, t});
+    next_free[node] = t + us(30);
+    const bool pause = t >= us(1160) && t < us(1165);
+    t += pause ? us(6) : SimTime{static_cast<std::int64_t>(1'500 + random.below(2'400))};
+  }
+  std::vector<std::string> logs[2];
+  for (const bool lazy : {true, false}) {
+    Medium medium(loader, positions, lazy);
+    for (const Send& send : sends) medium.send(send.node, send.at, us(24), 54e6);
+    medium.send(1, t + us(1), us(200), 6e6);
+    medium.run_until(t + us(1000));
+    logs[lazy] = all_logs(medium);
+    const std::vector<std::string>& node0 = medium.at(0).log;
+    EXPECT_TRUE(
+        std::any_of(node0.begin(), node0.end(),
+                    [](const std::string& line) { return line.find(" rx ") != std::string::npos; }))
+        << mode_name(lazy) << ": node 0 did not receive the near frame";
+  }
+  EXPECT_EQ(logs[true], logs[false]);
+}
+
 }  // namespace
 }  // namespace swarmnet

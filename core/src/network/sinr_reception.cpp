@@ -5,6 +5,7 @@
 #include <iterator>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "network/nist_error_rate.hpp"
 #include "network/radio_thresholds.hpp"
@@ -122,31 +123,41 @@ void SinrReception::sync_window() {
     window_synced_ = now;
     return;
   }
-  // Only the last few far starts can matter: a window lasts 4 us, so a start with none in the
-  // 4 us before it opens a window whatever came earlier. Look back a little, and further only
-  // while the earliest start found could have joined an earlier window.
+  // Only the last few far starts can matter: a window lasts 4 us, so a start more than 4 us after
+  // the one before it opens a window whatever came earlier. Look back a little, and further only
+  // while no such start is found (far starts less than 4 us apart all the way back).
   SimTime look_back = kSyncLookBack;
+  std::size_t first = 0;  // the far start the replay begins at
   while (true) {
     const bool cut = now.time - look_back > window_synced_.time + kDetectionWindow;
     const EventKey from = cut ? EventKey{now.time - look_back, 0} : window_synced_;
     far_scratch_.clear();
     far_source_->far_starts(self_, from, now, far_scratch_);
-    if (cut && !far_scratch_.empty() &&
-        far_scratch_.front().start.time < from.time + kDetectionWindow) {
-      look_back = look_back * 2;
-      if (look_back + kDetectionWindow > FarSignalSource::kFarStartHistory) {
-        throw std::logic_error(
-            "PHY: far signals start less than 4 us apart for longer than the "
-            "channel keeps them");
+    if (!cut) break;  // from the state at window_synced_, which is exact
+    // Every window opened before `from` has ended by a start at least 4 us after it (or by now).
+    std::size_t opener = far_scratch_.size();
+    for (std::size_t i = far_scratch_.size(); i-- > 0;) {
+      const SimTime before = i > 0 ? far_scratch_[i - 1].start.time : from.time;
+      if (far_scratch_[i].start.time > before + kDetectionWindow) {
+        opener = i;
+        break;
       }
-      continue;
     }
-    // Cut: every window opened before `from` has ended by the first start found (or by now).
-    if (cut && window_open_) close_window();
-    break;
+    if (opener < far_scratch_.size() || far_scratch_.empty()) {
+      if (window_open_) close_window();
+      first = far_scratch_.empty() ? 0 : opener;
+      break;
+    }
+    look_back = look_back * 2;
+    if (look_back + kDetectionWindow > FarSignalSource::kFarStartHistory) {
+      throw std::logic_error(
+          "PHY: far signals start less than 4 us apart for longer than the channel keeps them (" +
+          std::to_string(FarSignalSource::kFarStartHistory.count()) + " ns)");
+    }
   }
-  for (const FarSignal& signal : far_scratch_) {
+  for (std::size_t i = first; i < far_scratch_.size(); ++i) {
     // signal_start for a far signal at an idle PHY, less what cannot matter (see far_events).
+    const FarSignal& signal = far_scratch_[i];
     close_window_before(signal.start);
     if (!window_open_) open_window(signal.start.time, signal.start.sequence);
   }
