@@ -15,6 +15,12 @@
 // still on the air, with the positions they were sent from, to answer a PHY's quiet_signals()
 // query by computing those links then, exactly as it would have at the transmission.
 //
+// Far signals (sinr model, network.channel.far_signals: lazy): a receiver whose signal is too weak
+// to be detected or sensed alone gets no events from the fan-out; the channel hands the frame to
+// FarSignals (network/far_signals.hpp), which hands such signals to a receiver only when they can
+// matter there. Their links keep their reserved sequence numbers, so every event runs where it
+// would have.
+//
 // Fan-out: the receivers' signal starts and ends are not put in the scheduler one event each (two
 // heap entries per receiver per frame made the heap, not the physics, the network half's main
 // cost). A frame's receivers are kept in a FrameFanout sorted by arrival, and one event per

@@ -1,18 +1,16 @@
-// Far signals without events (issue 13; the model is in network/phy.hpp, Phy::begin_far_events).
+// Far signals without events (issue 13; the model is in network/phy.hpp, "Far signals").
 //
 // A frame reaches about 190 receivers inside the interference cutoff of the study's scenario but
-// can be detected by about 9: the rest get a far signal, which matters to a receiver only while
-// it listens (locked on a frame or judging a preamble), when the far signals arriving at it
+// can be detected by about 9: the rest get a far signal, which matters to a receiver only when it
+// judges a preamble or receives a frame (interference), when the far signals arriving at it
 // could add up to the carrier-sense threshold, and for the detection windows they open. This
-// keeps the frames with far links on the air and, per receiver:
-//   - an upper bound of the far power still to end there, in integer units rounded up (exact
-//     sums, no drift): from the frame that takes it to the threshold on, until frames retire
-//     below it again, the receiver is "hot" and gets every far signal as events;
-//   - whether its PHY listens: then too it gets every far signal as events.
-// A receiver that starts getting events is handed the far signals still to end there that it
-// was not handed (Phy::begin_far_events); otherwise it asks for recent far starts
-// (far_starts) to replay the windows they opened. The cost of a far link is then two integer
-// additions per frame, instead of two events and two visits to the receiver's PHY.
+// keeps the frames with far links on the air (the index the PHYs ask: far_starts,
+// far_signals_during) and, per receiver, an upper bound of the far power still to end there, in
+// integer units rounded up (exact sums, no drift). From the frame that takes that bound to the
+// threshold until frames retire below it again, the receiver is "hot" and gets every far signal
+// as events; when it becomes hot it is handed those still to end that it was not handed
+// (Phy::begin_far_events). The cost of a far link that is not handed over is two integer
+// additions per frame, instead of two events at the receiver's PHY.
 #pragma once
 
 #include <cstdint>
