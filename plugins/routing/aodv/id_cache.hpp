@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
-#include <map>
+#include <unordered_map>
 #include <utility>
 
 #include "swarmnet/ids.hpp"
@@ -29,8 +29,21 @@ class IdCache {
 
  private:
   using Key = std::pair<NodeId, std::uint64_t>;
+  struct KeyHash {
+    std::size_t operator()(const Key& key) const {
+      // splitmix64's finalizer over node and id (ids are small consecutive numbers per node).
+      std::uint64_t x = (static_cast<std::uint64_t>(key.first) << 40U) ^ key.second;
+      x ^= x >> 30U;
+      x *= 0xbf58476d1ce4e5b9ULL;
+      x ^= x >> 27U;
+      x *= 0x94d049bb133111ebULL;
+      x ^= x >> 31U;
+      return static_cast<std::size_t>(x);
+    }
+  };
   SimTime lifetime_;
-  std::map<Key, SimTime> expiry_;
+  // Looked up, never walked: a hash table's order reaches no result.
+  std::unordered_map<Key, SimTime, KeyHash> expiry_;
   std::deque<std::pair<SimTime, Key>> order_;  // insertion order == expiry order
 };
 

@@ -88,6 +88,10 @@ std::vector<UnreachableDestination> RoutingTable::valid_destinations_via(NodeId 
   for (const auto& [destination, entry] : entries_) {
     if (entry.is_valid() && entry.next_hop == next_hop) out.push_back({destination, entry.seq});
   }
+  std::sort(out.begin(), out.end(),
+            [](const UnreachableDestination& a, const UnreachableDestination& b) {
+              return a.destination < b.destination;
+            });
   return out;
 }
 

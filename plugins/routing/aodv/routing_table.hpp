@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <unordered_map>
 #include <vector>
 
 #include "aodv_packet.hpp"
@@ -75,7 +76,7 @@ class RoutingTable {
   void blacklist(NodeId neighbor, SimTime until) { blacklist_[neighbor] = until; }
   [[nodiscard]] bool is_blacklisted(NodeId neighbor, SimTime now);
 
-  [[nodiscard]] const std::map<NodeId, RouteEntry>& entries() const { return entries_; }
+  [[nodiscard]] const std::unordered_map<NodeId, RouteEntry>& entries() const { return entries_; }
   [[nodiscard]] std::size_t size() const { return entries_.size(); }
   [[nodiscard]] SimTime delete_period() const { return delete_period_; }
 
@@ -85,7 +86,10 @@ class RoutingTable {
 
   SimTime delete_period_;
   bool increment_seq_on_expiry_;
-  std::map<NodeId, RouteEntry> entries_;  // ordered: iteration order is deterministic
+  // Looked up per packet, and large (a route per destination): a hash table, one probe where a
+  // tree took a dozen cache misses at thousands of nodes. Its order reaches no result: the one
+  // walk that lists entries (valid_destinations_via) sorts what it lists.
+  std::unordered_map<NodeId, RouteEntry> entries_;
   std::map<NodeId, SimTime> blacklist_;
 };
 
