@@ -21,20 +21,16 @@ import sys
 import tempfile
 import time
 
+import pinned_outputs  # beside this file: the same scenario and summary exclusions
+
 SOURCE = pathlib.Path(__file__).resolve().parents[2]
 
-# The exclusions of pinned_outputs.py.
-TIMING = ["wall_s", "cpu_s", "realtime_factor", "transport_share"]
-WORK = ["events"]
 MODES = ["lazy", "events"]
 
 
 def paper(robots: int, side_m: float, duration_s: float, seed: int, *extra: str) -> tuple:
-    """The study's evaluation scenario (802.11a DCF, sinr PHY, AODV, ARP; traffic from 1 s)."""
-    return ("configs/paper/evaluation.yaml",
-            ["--set", f"robots.count={robots}", "--set", f"arena.width_m={side_m}",
-             "--set", f"arena.height_m={side_m}", "--set", f"duration_s={duration_s}",
-             "--set", f"seed={seed}", "--set", "output.packet_trace=true", *extra])
+    """pinned_outputs.py's study scenario (packet trace on) with another seed."""
+    return pinned_outputs.paper(robots, side_m, duration_s, "--set", f"seed={seed}", *extra)
 
 
 # name: (scenario, extra arguments). About 13 s for all of them, both modes (RelWithDebInfo, one
@@ -94,10 +90,8 @@ def first_difference(a: list, b: list) -> str:
 
 
 def summary_lines(path: pathlib.Path) -> list:
-    summary = json.loads(path.read_text())
-    for key in TIMING + WORK:
-        summary.pop(key, None)
-    return json.dumps(summary, sort_keys=True, indent=1).splitlines()
+    results = pinned_outputs.results_of(json.loads(path.read_text()))
+    return json.dumps(results, sort_keys=True, indent=1).splitlines()
 
 
 def compare(name: str, outs: dict) -> list:
@@ -112,7 +106,8 @@ def compare(name: str, outs: dict) -> list:
         problems.append(f"{name}: packets.csv holds no packet (is the trace on?)")
     summaries = [summary_lines(out / "summary.json") for out in (lazy, events)]
     if summaries[0] != summaries[1]:
-        problems.append(f"{name}: summary.json (less {', '.join(TIMING + WORK)}) differs at "
+        left_out = ", ".join(pinned_outputs.TIMING + pinned_outputs.WORK)
+        problems.append(f"{name}: summary.json (less {left_out}) differs at "
                         f"{first_difference(*summaries)}")
     return problems
 

@@ -29,13 +29,9 @@ class SinrReception final : public PhyCore {
   void signal_start(std::uint64_t frame_uid, double rx_power_dbm, double rx_power_mw) override;
   void signal_end(const Frame& frame, double rx_power_dbm) override;
 
-  // Where to find the quiet signals reaching this PHY, which is node `self`. Without a source
-  // the PHY knows only the signals handed to it.
+  // Quiet and far signals: Phy's functions of the same names say what these do.
   void set_quiet_signal_source(const QuietSignalSource* source, NodeId self);
-  // Where to find the far signals this PHY, node `self`, is not handed as events. Without a
-  // source every signal comes as events.
   void set_far_signal_source(FarSignalSource* source, NodeId self);
-  // Far signals: see Phy::begin_far_events (network/phy.hpp).
   void begin_far_events(const std::vector<FarSignal>& signals);
   [[nodiscard]] EventKey far_history_start() const;
   void far_signal_event(const FarSignal& signal);
