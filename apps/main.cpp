@@ -211,7 +211,9 @@ static int run_main(int argc, char** argv) {
                   "with --net: the token the network half was started with (default: "
                   "$SWARMNET_NET_TOKEN_FILE)");
   run->add_option("--step-timeout", transport.step_timeout_s,
-                  "seconds to wait for the other half before declaring it hung")
+                  "seconds the other half may go without answering before it is declared "
+                  "hung; a network half this run started is hung only if it also used no CPU "
+                  "in that time (a long step is waited for)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
 
@@ -228,7 +230,9 @@ static int run_main(int argc, char** argv) {
                      "serve robot halves on [HOST:]PORT (HOST defaults to 127.0.0.1)");
   source->require_option(1);
   net->add_option("--parent", net_options.parent, "stop when this process is gone");
-  net->add_option("--step-timeout-ms", net_timeout_ms, "milliseconds to wait for the robot half")
+  net->add_option("--step-timeout-ms", net_timeout_ms,
+                  "milliseconds the robot half may go without answering (and, for the parent "
+                  "of a child network half, without using CPU) before it is declared hung")
       ->check(CLI::PositiveNumber);
   net->add_option("--out", net_out,
                   "with --listen: directory for the runs served (run-NNNN each; default "

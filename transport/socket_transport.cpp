@@ -43,16 +43,16 @@ IoStatus SocketTransport::wait_for(short events) {
   // then finds this side awake and its send() wakes nobody, as with the ring.
   pollfd p{fd_, events, 0};
   if (spin_then_yield(policy_, [&] { return ::poll(&p, 1, 0) > 0; })) return IoStatus::ok;
-  // The clock bounds how long we wait for the peer; it never reaches a result.
-  const auto deadline = std::chrono::steady_clock::now() + policy_.timeout;
+  WaitDeadline deadline(policy_);
   const auto slice = std::chrono::duration_cast<std::chrono::milliseconds>(policy_.sleep_slice);
   for (;;) {
     const int ready = ::poll(&p, 1, static_cast<int>(std::max<std::int64_t>(1, slice.count())));
     if (ready > 0) return IoStatus::ok;
     if (ready < 0 && errno != EINTR) return IoStatus::closed;
     if (policy_.peer_alive && !policy_.peer_alive()) return IoStatus::peer_dead;
+    // deadline_ (a handshake's) is a hard bound; the policy's yields to a peer that works.
     const auto now = std::chrono::steady_clock::now();
-    if (now >= deadline || now >= deadline_) return IoStatus::timeout;
+    if (now >= deadline_ || deadline.passed(now)) return IoStatus::timeout;
   }
 }
 

@@ -242,8 +242,7 @@ IoStatus wait_for(Attempt&& attempt, std::atomic<std::uint32_t>& event,
     return status != IoStatus::would_block;
   };
   if (spin_then_yield(policy, done)) return status;
-  // The clock bounds how long we wait; it never reaches a result.
-  const auto deadline = std::chrono::steady_clock::now() + policy.timeout;
+  WaitDeadline deadline(policy);
   for (;;) {
     const std::uint32_t seen = event.load(std::memory_order_acquire);
     sleeping.store(1, std::memory_order_seq_cst);
@@ -261,7 +260,7 @@ IoStatus wait_for(Attempt&& attempt, std::atomic<std::uint32_t>& event,
     status = attempt();
     if (status != IoStatus::would_block) return status;
     if (policy.peer_alive && !policy.peer_alive()) return IoStatus::peer_dead;
-    if (std::chrono::steady_clock::now() >= deadline) return IoStatus::timeout;
+    if (deadline.passed(std::chrono::steady_clock::now())) return IoStatus::timeout;
   }
 }
 

@@ -22,6 +22,37 @@ struct WaitPolicy {
   std::chrono::nanoseconds timeout = std::chrono::seconds(60);           // give up: the peer hangs
   // Called between sleep slices; returns false when the peer is known to be gone.
   std::function<bool()> peer_alive;
+  // A count that grows while the peer works (its CPU time). When set, a wait gives up only
+  // after `timeout` during which the count stood still: a peer computing a long step (a network
+  // half in a route-request storm at thousands of robots) is slow, not hung. Called once a
+  // timeout, not in the spin.
+  std::function<std::uint64_t()> peer_work;
+};
+
+// When a wait under a policy is over: `timeout` after it began, pushed back by another `timeout`
+// each time the peer's work count (WaitPolicy::peer_work) has grown since the last look. The
+// clock only bounds waiting; it never reaches a result.
+class WaitDeadline {
+ public:
+  explicit WaitDeadline(const WaitPolicy& policy)
+      : policy_(policy),
+        deadline_(std::chrono::steady_clock::now() + policy.timeout),
+        work_(policy.peer_work ? policy.peer_work() : 0) {}
+
+  [[nodiscard]] bool passed(std::chrono::steady_clock::time_point now) {
+    if (now < deadline_) return false;
+    if (!policy_.peer_work) return true;
+    const std::uint64_t work = policy_.peer_work();
+    if (work == work_) return true;
+    work_ = work;
+    deadline_ = now + policy_.timeout;
+    return false;
+  }
+
+ private:
+  const WaitPolicy& policy_;
+  std::chrono::steady_clock::time_point deadline_;
+  std::uint64_t work_;
 };
 
 // A hint to the CPU that this thread is spinning (eases the sibling hyperthread).

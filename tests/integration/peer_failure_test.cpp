@@ -191,6 +191,25 @@ TEST(PeerFailure, HungNetworkHalfIsDetectedByTheStepTimeout) {
   expect_nothing_left(dir, run.pid());
 }
 
+// A network half that computes for longer than the step timeout is slow, not hung: the robot
+// half keeps waiting while the child uses the CPU. The fixture's node 0 computes for 0.4 s of
+// CPU every 0.1 simulated s; the step timeout is 0.15 s.
+TEST(PeerFailure, ANetworkHalfComputingPastTheStepTimeoutIsWaitedFor) {
+  for (const std::string transport : {"shm", "uds"}) {
+    TempDir dir;
+    const std::string out = (dir.path() / "run").string();
+    const CommandResult result = run_swarmnet(
+        "run " SWARMNET_SOURCE_DIR "/configs/quickstart.yaml --quiet --transport " + transport +
+        " --step-timeout 0.15 --set duration_s=0.5 --set "
+        "'plugin_paths=[\"" SWARMNET_TEST_FIXTURE_DIR
+        "\"]' --set 'network.routing={\"plugin\": \"busy_routing\", \"params\": "
+        "{\"period_s\": 0.1, \"busy_ms\": 400}}' --out " +
+        out);
+    EXPECT_EQ(result.exit_code, 0) << transport << ": " << result.output;
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "run" / "summary.json")) << transport;
+  }
+}
+
 TEST(PeerFailure, TerminationSignalStopsBothHalvesCleanly) {
   for (const char* transport : {"shm", "uds"}) {
     TempDir dir;

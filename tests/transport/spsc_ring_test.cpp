@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
@@ -336,6 +337,55 @@ TEST(SpscRing, WaitingEndsAtTheTimeoutOrWhenThePeerIsGone) {
   policy.timeout = std::chrono::seconds(30);
   policy.peer_alive = [] { return false; };
   EXPECT_EQ(ring.pop(out, policy), IoStatus::peer_dead);
+}
+
+// A peer that takes longer than the timeout but works all along (its work count grows) is
+// waited for; once its count stands still for a whole timeout, the wait ends.
+TEST(SpscRing, APeerThatWorksIsWaitedForPastTheTimeout) {
+  RingMemory m(1024);
+  SpscRing producer = SpscRing::create(m.memory, 1024);
+  SpscRing consumer;
+  std::string error;
+  ASSERT_TRUE(SpscRing::attach(m.memory, m.bytes, consumer, error));
+  std::atomic<std::uint64_t> work{0};
+  WaitPolicy policy;
+  policy.timeout = std::chrono::milliseconds(40);
+  policy.sleep_slice = std::chrono::milliseconds(5);
+  policy.peer_work = [&work] { return work.load(); };
+  std::thread peer([&] {
+    // Ten timeouts of work, then the answer.
+    const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(400);
+    while (std::chrono::steady_clock::now() < until) {
+      work.fetch_add(1);
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    ASSERT_EQ(producer.try_push(pattern(8, 3)), IoStatus::ok);
+    producer.publish();
+  });
+  std::vector<std::byte> out;
+  EXPECT_EQ(consumer.pop(out, policy), IoStatus::ok);
+  EXPECT_EQ(out, pattern(8, 3));
+  peer.join();
+  // The count no longer grows: the next wait ends at its timeout.
+  EXPECT_EQ(consumer.pop(out, policy), IoStatus::timeout);
+}
+
+TEST(WaitDeadline, PassesAfterATimeoutWithoutWorkAndMovesOnWork) {
+  std::uint64_t work = 7;
+  WaitPolicy policy;
+  policy.timeout = std::chrono::seconds(10);
+  policy.peer_work = [&work] { return work; };
+  WaitDeadline deadline(policy);
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_FALSE(deadline.passed(start + std::chrono::seconds(9)));
+  work = 8;  // the peer worked during the first timeout
+  EXPECT_FALSE(deadline.passed(start + std::chrono::seconds(11)));
+  EXPECT_FALSE(deadline.passed(start + std::chrono::seconds(20))) << "the new timeout runs to 21 s";
+  EXPECT_TRUE(deadline.passed(start + std::chrono::seconds(22))) << "no work since 11 s";
+  WaitPolicy fixed;  // no work count: the timeout is a fixed bound
+  fixed.timeout = std::chrono::seconds(10);
+  WaitDeadline bound(fixed);
+  EXPECT_TRUE(bound.passed(std::chrono::steady_clock::now() + std::chrono::seconds(11)));
 }
 
 TEST(SpscRing, AConsumerThatFencesHeavilySaysSo) {

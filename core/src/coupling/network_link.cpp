@@ -8,6 +8,7 @@
 #include "coupling/child_process.hpp"
 #include "coupling/network_half.hpp"
 #include "coupling/peer_authentication.hpp"
+#include "coupling/peer_cpu.hpp"
 #include "coupling/stop_signal.hpp"
 #include "inproc_channel.hpp"
 #include "outputs/run_error.hpp"
@@ -46,12 +47,18 @@ namespace {
 // How long a network half may take to stop after the robot half closed its end.
 constexpr std::chrono::milliseconds kStopGrace{2000};
 
-WaitPolicy policy_with(const LinkOptions& options, std::function<bool()> peer_alive) {
+// `child`: the network half's process, when this half started it. Its CPU time then tells a
+// long step from a hang: the step timeout counts only time in which the child did not compute.
+// A remote or in-process half has no process of ours to look at: the timeout is a fixed bound.
+WaitPolicy policy_with(const LinkOptions& options, ChildProcess* child) {
   WaitPolicy policy;
   policy.timeout = options.step_timeout;
-  policy.peer_alive = [alive = std::move(peer_alive)] {
-    return stop_signal() == 0 && (!alive || alive());
+  policy.peer_alive = [child] {
+    return stop_signal() == 0 && (child == nullptr || child->alive());
   };
+  if (child != nullptr) {
+    policy.peer_work = [pid = child->pid()] { return process_cpu_ticks(pid); };
+  }
   return policy;
 }
 
@@ -64,7 +71,7 @@ class InprocLink final : public NetworkLink {
   // network thread, started after that, is the loader's only user from then on.
   InprocLink(const Scenario& scenario, PluginLoader& loader, const std::filesystem::path& run_dir,
              const LinkOptions& options)
-      : channel_(options.ring_bytes, policy_with(options, {})),
+      : channel_(options.ring_bytes, policy_with(options, nullptr)),
         network_channel_(channel_.network_end(), "the robot half") {
     thread_ = std::thread([this, &scenario, &loader, run_dir] {
       try {
@@ -222,8 +229,8 @@ std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario, PluginL
                      "--token-file FILE or " + kTokenFileVariable + " (docs/security.md)");
     }
     const PeerSecret secret = PeerSecret::from_file(token);
-    auto transport =
-        std::make_unique<SocketTransport>(connect_tcp(host, port), policy_with(options, {}), "TCP");
+    auto transport = std::make_unique<SocketTransport>(connect_tcp(host, port),
+                                                       policy_with(options, nullptr), "TCP");
     if (std::string why = authenticate_to_acceptor(*transport, secret); !why.empty()) {
       throw RunError(options.remote + ": " + why);
     }
@@ -237,9 +244,9 @@ std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario, PluginL
       auto child =
           std::make_unique<ChildProcess>(child_arguments(options, "--shm", segment->name()));
       ChildProcess* watched = child.get();
-      auto transport = std::make_unique<RingTransport>(
-          segment->robot_to_network(), segment->network_to_robot(),
-          policy_with(options, [watched] { return watched->alive(); }), "shared memory");
+      auto transport =
+          std::make_unique<RingTransport>(segment->robot_to_network(), segment->network_to_robot(),
+                                          policy_with(options, watched), "shared memory");
       const std::string description = "shared-memory rings /dev/shm/" + segment->name() + ", " +
                                       mib(options.ring_bytes) + " each way";
       return std::make_unique<ChildLink>(std::move(child), std::move(transport), std::move(segment),
@@ -253,7 +260,7 @@ std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario, PluginL
       auto child = std::make_unique<ChildProcess>(child_arguments(options, "--uds", path),
                                                   child_environment(secret));
       ChildProcess* watched = child.get();
-      const WaitPolicy policy = policy_with(options, [watched] { return watched->alive(); });
+      const WaitPolicy policy = policy_with(options, watched);
       const int fd = accept_one(listener, policy, "Unix socket " + path);
       auto transport = std::make_unique<SocketTransport>(fd, policy, "Unix-domain socket");
       check_child(*transport, secret, path);
@@ -268,7 +275,7 @@ std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario, PluginL
       auto child = std::make_unique<ChildProcess>(child_arguments(options, "--tcp", address),
                                                   child_environment(secret));
       ChildProcess* watched = child.get();
-      const WaitPolicy policy = policy_with(options, [watched] { return watched->alive(); });
+      const WaitPolicy policy = policy_with(options, watched);
       const int fd = accept_one(listener, policy, "TCP " + address);
       auto transport = std::make_unique<SocketTransport>(fd, policy, "TCP loopback");
       check_child(*transport, secret, address);

@@ -13,6 +13,7 @@
 #include "coupling/network_half.hpp"
 #include "coupling/network_link.hpp"
 #include "coupling/peer_authentication.hpp"
+#include "coupling/peer_cpu.hpp"
 #include "coupling/stop_signal.hpp"
 #include "outputs/run_error.hpp"
 #include "plugin/plugin_loader.hpp"
@@ -82,6 +83,8 @@ int serve_parent(const NetworkProcessOptions& options) {
   if (options.parent != 0) {
     const pid_t parent = options.parent;
     policy.peer_alive = [parent] { return ::getppid() == parent; };
+    // A robot half computing a long step (physics of thousands of robots) is not hung.
+    policy.peer_work = [parent] { return process_cpu_ticks(parent); };
   }
   Connection connection;
   try {
