@@ -35,6 +35,8 @@ import subprocess
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent.parent
+sys.path.insert(0, str(ROOT / "scripts"))
+from seed_interval import student_interval  # noqa: E402
 # Every variant: ns-3.37's AODV's sequence-number rules (a broken route's number is not
 # incremented; a RREQ leaves the route to its sender without a valid number), which the native
 # engine is told to follow, so that the models correspond (docs/ns3-engine.md).
@@ -122,7 +124,7 @@ def main():
                                        "pdr": summary["pdr"]}
             rows.append(row)
             print(f"{n} robots, seed {seed} done", file=sys.stderr)
-            write_outputs(out, with_earlier(rows, previous))  # a stopped sweep keeps its rows
+            write_outputs(out, with_earlier(rows, previous), binary)  # a stopped sweep keeps its rows
     print((out / "table.md").read_text(), end="")
 
 
@@ -142,7 +144,21 @@ def fmt(value, spec):
     return "-" if value is None else format(value, spec)
 
 
-def write_outputs(out, rows):
+def delivery_delta(group, variant, base, binary):
+    """The pooled delivery of `variant` minus its native pair's, in points, and with several seeds
+    the 95% Student-t interval of the mean per-seed difference (`swarmnet stats`)."""
+    def ratio(runs, name):
+        return (sum(r[name]["delivered"] for r in runs) /
+                max(1, sum(r[name]["unicast_sent"] for r in runs)))
+    text = f"{100 * (ratio(group, variant) - ratio(group, base)):+.1f}"
+    interval = student_interval(binary, [100 * (r[variant]["pdr"] - r[base]["pdr"])
+                                         for r in group])
+    if interval is not None:
+        text += f"; 95% CI {interval['low']:+.1f} to {interval['high']:+.1f}"
+    return f" ({text})"
+
+
+def write_outputs(out, rows, binary):
     (out / "results.json").write_text(json.dumps(rows, indent=2) + "\n")
     sizes = sorted({r["robots"] for r in rows})
     names = {"native_static": "native, static ARP", "ns3_static": "ns-3, static ARP",
@@ -156,8 +172,7 @@ def write_outputs(out, rows):
             delivered = sum(r[variant]["delivered"] for r in group)
             pdr = delivered / max(1, sum(r[variant]["unicast_sent"] for r in group))
             base = BASELINE.get(variant)
-            delta = "" if base is None else (
-                f" ({100 * (pdr - sum(r[base]['delivered'] for r in group) / max(1, sum(r[base]['unicast_sent'] for r in group))):+.1f})")
+            delta = "" if base is None else delivery_delta(group, variant, base, binary)
             delay = pooled(group, variant, "delay_mean_s")
             control = sum(r[variant]["control_packets"] for r in group)
             frames = sum(r[variant]["mac_tx_frames"] for r in group) / len(group)
@@ -170,13 +185,21 @@ def write_outputs(out, rows):
               "swarmnet_ns3_replay CPU s (coupling adds) | swarmnet replay, engine alone CPU s "
               "(coupling adds) | delivery: run / replay / engine alone |",
               "|---|---|---|---|---|---|"]
-    for r in rows:
-        engine_cpu = r["ns3"]["cpu_s"]["network"] + r["ns3"]["cpu_s"]["transport"]
-        alone, engine_alone = r["ns3_alone"]["cpu_s"], r["engine_alone"]["cpu_s"]
-        lines.append(f"| {r['robots']} | {r['seed']} | {engine_cpu:.2f} | {alone:.2f} "
-                     f"({100 * (engine_cpu / alone - 1):+.1f}%) | {engine_alone:.2f} "
-                     f"({100 * (engine_cpu / engine_alone - 1):+.1f}%) | {r['ns3']['pdr']:.3f} / "
-                     f"{r['ns3_alone']['pdr']:.3f} / {r['engine_alone']['pdr']:.3f} |")
+    def coupling_row(label, runs):
+        engine_cpu = sum(r["ns3"]["cpu_s"]["network"] + r["ns3"]["cpu_s"]["transport"]
+                         for r in runs)
+        alone = sum(r["ns3_alone"]["cpu_s"] for r in runs)
+        engine_alone = sum(r["engine_alone"]["cpu_s"] for r in runs)
+        return (f"| {runs[0]['robots']} | {label} | {engine_cpu:.2f} | {alone:.2f} "
+                f"({100 * (engine_cpu / alone - 1):+.1f}%) | {engine_alone:.2f} "
+                f"({100 * (engine_cpu / engine_alone - 1):+.1f}%) | "
+                + " / ".join(f"{sum(r[k]['pdr'] for r in runs) / len(runs):.3f}"
+                             for k in ("ns3", "ns3_alone", "engine_alone")) + " |")
+    for n in sizes:
+        group = [r for r in rows if r["robots"] == n]
+        lines += [coupling_row(str(r["seed"]), [r]) for r in group]
+        if len(group) > 1:  # CPU summed over the seeds: the figure; single runs are noisy
+            lines.append(coupling_row(f"all {len(group)}, summed", group))
     (out / "table.md").write_text("\n".join(lines) + "\n")
 
 

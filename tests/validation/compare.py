@@ -188,7 +188,10 @@ RULE = "|" + "---|" * HEADER.count(" |")
 def markdown_cells(row):
     diff = f"{row['pdr_diff_points']:+.1f}"
     if "pdr_diff_points_range" in row:  # pooled over seeds: the per-seed range too
-        diff += " ({:+.1f} to {:+.1f})".format(*row["pdr_diff_points_range"])
+        diff += " ({:+.1f} to {:+.1f}".format(*row["pdr_diff_points_range"])
+        if "pdr_diff_points_interval" in row:  # grids from before it have no interval
+            diff += "; 95% CI {:+.1f} to {:+.1f}".format(*row["pdr_diff_points_interval"])
+        diff += ")"
     return [
         f"{row['pdr'][0]:.3f}", f"{row['pdr'][1]:.3f}", diff,
         _ms(row["delay_mean_s"][0]), _ms(row["delay_mean_s"][1]),
@@ -219,6 +222,9 @@ def text_report(row):
         lines[0] = f"seeds {','.join(map(str, row['seeds']))} pooled: " + lines[0]
         lines.insert(2, "  per seed         delivery diff {:+.2f} to {:+.2f} points".format(
             *row["pdr_diff_points_range"]))
+        if "pdr_diff_points_interval" in row:
+            lines.insert(3, "  mean per seed    95% Student-t interval {:+.2f} to {:+.2f} points"
+                         .format(*row["pdr_diff_points_interval"]))
     if any(v is not None for v in row["control_per_delivered"]):
         a, b = row["control_per_delivered"]
         lines.append(f"  control/deliv.   SwarmNet {a if a is None else round(a, 3)}  "

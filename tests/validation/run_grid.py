@@ -41,8 +41,10 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
 import compare  # noqa: E402
 import validation_runner as vr  # noqa: E402
+from seed_interval import student_interval  # noqa: E402
 
 STUDY_DENSITY = 200.0  # robots per km^2: 50 robots in 500 x 500 m
 DENSE_DENSITY = 800.0  # four times denser: 50 robots in 250 x 250 m
@@ -292,7 +294,9 @@ def run_row(swarmnet, ns3, scenario, work_dir, routing, stack, overrides, seeds,
     row = vr.compared(compare.pool([p[0] for p in pairs]), compare.pool([p[1] for p in pairs]),
                       routing, stack, tolerances, aligned)
     diffs = [r["pdr_diff_points"] for r in per_seed]
-    row.update(seeds=seeds, pdr_diff_points_range=[min(diffs), max(diffs)], per_seed=per_seed)
+    interval = student_interval(swarmnet, diffs)
+    row.update(seeds=seeds, pdr_diff_points_range=[min(diffs), max(diffs)],
+               pdr_diff_points_interval=[interval["low"], interval["high"]], per_seed=per_seed)
     return row
 
 
@@ -301,8 +305,8 @@ def describe_seeds(seeds):
         return f"seed {seeds[0]}"
     span = (f"{seeds[0]}-{seeds[-1]}" if seeds == list(range(seeds[0], seeds[-1] + 1))
             else ",".join(map(str, seeds)))
-    return (f"seeds {span} pooled (delivery difference: pooled, then the per-seed range; "
-            f"p95 is not pooled)")
+    return (f"seeds {span} pooled (delivery difference: pooled, then the per-seed range and the "
+            f"95% Student-t interval of the mean per-seed difference; p95 is not pooled)")
 
 
 def markdown_table(results, meta):
