@@ -15,7 +15,9 @@ import tempfile
 
 def student_interval(swarmnet, values):
     """{'n', 'mean', 'sd', 'low', 'high'} of `values` from `swarmnet stats`; None for fewer than
-    two values (no interval exists). Raises RuntimeError naming the command if it fails."""
+    two values (no interval exists). The interval is of the unweighted mean of the values; beside
+    a pooled difference over seeds of near-equal size it is a close companion, not the same
+    number. Raises RuntimeError naming the command if it fails, OSError if it cannot start."""
     values = [float(v) for v in values]
     if len(values) < 2:
         return None

@@ -22,29 +22,34 @@ struct WaitPolicy {
   std::chrono::nanoseconds timeout = std::chrono::seconds(60);           // give up: the peer hangs
   // Called between sleep slices; returns false when the peer is known to be gone.
   std::function<bool()> peer_alive;
-  // A count that grows while the peer works (its CPU time). When set, a wait gives up only
-  // after `timeout` during which the count stood still: a peer computing a long step (a network
-  // half in a route-request storm at thousands of robots) is slow, not hung. Called once a
-  // timeout, not in the spin.
-  std::function<std::uint64_t()> peer_work;
+  // The CPU time the peer has used so far. When set, a wait gives up only after a whole
+  // `timeout` in which the peer used less than a tenth of it in CPU: a peer computing a long
+  // step (a network half in a route-request storm at thousands of robots) is slow, not hung,
+  // while two halves blocked on each other, which wake each sleep slice for microseconds, still
+  // time out. Read only once a wait has slept a slice, never in the spin.
+  std::function<std::chrono::nanoseconds()> peer_cpu;
 };
 
-// When a wait under a policy is over: `timeout` after it began, pushed back by another `timeout`
-// each time the peer's work count (WaitPolicy::peer_work) has grown since the last look. The
-// clock only bounds waiting; it never reaches a result.
+// When a wait under a policy is over. Without peer_cpu: `timeout` after it began. With it: at the
+// end of the first `timeout`-long window, counted from the first sleep slice, in which the peer
+// used less than a tenth of the window in CPU; a peer that stops computing is thus found within
+// two timeouts. The clocks only bound waiting; they never reach a result.
 class WaitDeadline {
  public:
   explicit WaitDeadline(const WaitPolicy& policy)
-      : policy_(policy),
-        deadline_(std::chrono::steady_clock::now() + policy.timeout),
-        work_(policy.peer_work ? policy.peer_work() : 0) {}
+      : policy_(policy), deadline_(std::chrono::steady_clock::now() + policy.timeout) {}
+  explicit WaitDeadline(WaitPolicy&&) = delete;  // it keeps a reference: not to a temporary
 
   [[nodiscard]] bool passed(std::chrono::steady_clock::time_point now) {
+    if (policy_.peer_cpu && !baseline_) {
+      cpu_ = policy_.peer_cpu();  // lazily: most waits end within a slice
+      baseline_ = true;
+    }
     if (now < deadline_) return false;
-    if (!policy_.peer_work) return true;
-    const std::uint64_t work = policy_.peer_work();
-    if (work == work_) return true;
-    work_ = work;
+    if (!policy_.peer_cpu) return true;
+    const std::chrono::nanoseconds cpu = policy_.peer_cpu();
+    if (cpu - cpu_ < policy_.timeout / 10) return true;  // a failed read (0) counts as no work
+    cpu_ = cpu;
     deadline_ = now + policy_.timeout;
     return false;
   }
@@ -52,7 +57,8 @@ class WaitDeadline {
  private:
   const WaitPolicy& policy_;
   std::chrono::steady_clock::time_point deadline_;
-  std::uint64_t work_;
+  std::chrono::nanoseconds cpu_{0};
+  bool baseline_ = false;
 };
 
 // A hint to the CPU that this thread is spinning (eases the sibling hyperthread).

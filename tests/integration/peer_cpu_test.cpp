@@ -1,4 +1,4 @@
-// process_cpu_ticks (coupling/peer_cpu.hpp): how a half tells a busy peer from a hung one.
+// process_cpu_time (coupling/peer_cpu.hpp): how a half tells a busy peer from a hung one.
 #include "coupling/peer_cpu.hpp"
 
 #include <gtest/gtest.h>
@@ -26,28 +26,29 @@ TEST(PeerCpu, AProcessThatComputesCountsTicksAndAStoppedOneDoesNot) {
   if (child == 0) {
     for (;;) burn_cpu(std::chrono::milliseconds(100));
   }
-  // A busy child's count grows (ticks are 10 ms; allow a loaded machine time to schedule it).
-  const std::uint64_t first = process_cpu_ticks(child);
+  // A busy child's time grows (the kernel counts 10 ms ticks; allow a loaded machine time to
+  // schedule it).
+  const std::chrono::nanoseconds first = process_cpu_time(child);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-  while (process_cpu_ticks(child) <= first && std::chrono::steady_clock::now() < deadline) {
+  while (process_cpu_time(child) <= first && std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
-  EXPECT_GT(process_cpu_ticks(child), first);
+  EXPECT_GT(process_cpu_time(child), first);
   // Stopped (as a hung peer is, for all the CPU it uses), it stands still.
-  ASSERT_EQ(::kill(child, SIGSTOP), 0);
+  EXPECT_EQ(::kill(child, SIGSTOP), 0);
   std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  const std::uint64_t stopped = process_cpu_ticks(child);
+  const std::chrono::nanoseconds stopped = process_cpu_time(child);
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  EXPECT_EQ(process_cpu_ticks(child), stopped);
+  EXPECT_EQ(process_cpu_time(child), stopped);
   ::kill(child, SIGKILL);
   ::waitpid(child, nullptr, 0);
   // Gone: nothing to read.
-  EXPECT_EQ(process_cpu_ticks(child), 0U);
+  EXPECT_EQ(process_cpu_time(child).count(), 0);
 }
 
 TEST(PeerCpu, ThisProcessReadsItsOwnTime) {
   burn_cpu(std::chrono::milliseconds(50));
-  EXPECT_GT(process_cpu_ticks(::getpid()), 0U);
+  EXPECT_GT(process_cpu_time(::getpid()).count(), 0);
 }
 
 }  // namespace

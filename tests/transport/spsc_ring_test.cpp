@@ -339,50 +339,50 @@ TEST(SpscRing, WaitingEndsAtTheTimeoutOrWhenThePeerIsGone) {
   EXPECT_EQ(ring.pop(out, policy), IoStatus::peer_dead);
 }
 
-// A peer that takes longer than the timeout but works all along (its work count grows) is
-// waited for; once its count stands still for a whole timeout, the wait ends.
-TEST(SpscRing, APeerThatWorksIsWaitedForPastTheTimeout) {
+// A peer that takes longer than the timeout but computes all along is waited for; once it
+// stops computing, the wait ends. The peer's CPU time is simulated: each look finds a second
+// more while it works, so the test does not depend on how this machine schedules threads.
+TEST(SpscRing, APeerThatComputesIsWaitedForPastTheTimeout) {
   RingMemory m(1024);
   SpscRing producer = SpscRing::create(m.memory, 1024);
   SpscRing consumer;
   std::string error;
   ASSERT_TRUE(SpscRing::attach(m.memory, m.bytes, consumer, error));
-  std::atomic<std::uint64_t> work{0};
+  std::atomic<bool> computing{true};
+  std::atomic<std::int64_t> cpu_s{0};
   WaitPolicy policy;
   policy.timeout = std::chrono::milliseconds(40);
   policy.sleep_slice = std::chrono::milliseconds(5);
-  policy.peer_work = [&work] { return work.load(); };
+  policy.peer_cpu = [&] {
+    if (computing.load()) cpu_s.fetch_add(1);
+    return std::chrono::nanoseconds(std::chrono::seconds(cpu_s.load()));
+  };
   std::thread peer([&] {
-    // Ten timeouts of work, then the answer.
-    const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(400);
-    while (std::chrono::steady_clock::now() < until) {
-      work.fetch_add(1);
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-    ASSERT_EQ(producer.try_push(pattern(8, 3)), IoStatus::ok);
-    producer.publish();
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));  // ten timeouts
+    EXPECT_EQ(producer.try_push(pattern(8, 3)), IoStatus::ok);
+    computing.store(false);
   });
   std::vector<std::byte> out;
   EXPECT_EQ(consumer.pop(out, policy), IoStatus::ok);
   EXPECT_EQ(out, pattern(8, 3));
   peer.join();
-  // The count no longer grows: the next wait ends at its timeout.
-  EXPECT_EQ(consumer.pop(out, policy), IoStatus::timeout);
+  EXPECT_EQ(consumer.pop(out, policy), IoStatus::timeout) << "the peer no longer computes";
 }
 
-TEST(WaitDeadline, PassesAfterATimeoutWithoutWorkAndMovesOnWork) {
-  std::uint64_t work = 7;
+TEST(WaitDeadline, PassesAfterATimeoutWithLittleCpuAndMovesOnRealWork) {
+  std::chrono::nanoseconds cpu{std::chrono::seconds(7)};
   WaitPolicy policy;
   policy.timeout = std::chrono::seconds(10);
-  policy.peer_work = [&work] { return work; };
+  policy.peer_cpu = [&cpu] { return cpu; };
   WaitDeadline deadline(policy);
   const auto start = std::chrono::steady_clock::now();
-  EXPECT_FALSE(deadline.passed(start + std::chrono::seconds(9)));
-  work = 8;  // the peer worked during the first timeout
+  EXPECT_FALSE(deadline.passed(start + std::chrono::seconds(1)));  // the baseline: 7 s
+  cpu += std::chrono::seconds(2);  // the peer computed 2 s (a fifth of the window)
   EXPECT_FALSE(deadline.passed(start + std::chrono::seconds(11)));
-  EXPECT_FALSE(deadline.passed(start + std::chrono::seconds(20))) << "the new timeout runs to 21 s";
-  EXPECT_TRUE(deadline.passed(start + std::chrono::seconds(22))) << "no work since 11 s";
-  WaitPolicy fixed;  // no work count: the timeout is a fixed bound
+  cpu += std::chrono::milliseconds(50);  // then only woke now and then (a twentieth of 1 s)
+  EXPECT_FALSE(deadline.passed(start + std::chrono::seconds(20))) << "the new window ends at 21 s";
+  EXPECT_TRUE(deadline.passed(start + std::chrono::seconds(22))) << "too little CPU since 11 s";
+  WaitPolicy fixed;  // no CPU to look at: the timeout is a fixed bound
   fixed.timeout = std::chrono::seconds(10);
   WaitDeadline bound(fixed);
   EXPECT_TRUE(bound.passed(std::chrono::steady_clock::now() + std::chrono::seconds(11)));

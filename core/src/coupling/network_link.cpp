@@ -57,7 +57,7 @@ WaitPolicy policy_with(const LinkOptions& options, ChildProcess* child) {
     return stop_signal() == 0 && (child == nullptr || child->alive());
   };
   if (child != nullptr) {
-    policy.peer_work = [pid = child->pid()] { return process_cpu_ticks(pid); };
+    policy.peer_cpu = [pid = child->pid()] { return process_cpu_time(pid); };
   }
   return policy;
 }

@@ -84,7 +84,7 @@ int serve_parent(const NetworkProcessOptions& options) {
     const pid_t parent = options.parent;
     policy.peer_alive = [parent] { return ::getppid() == parent; };
     // A robot half computing a long step (physics of thousands of robots) is not hung.
-    policy.peer_work = [parent] { return process_cpu_ticks(parent); };
+    policy.peer_cpu = [parent] { return process_cpu_time(parent); };
   }
   Connection connection;
   try {
