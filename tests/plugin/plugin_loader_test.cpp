@@ -286,10 +286,11 @@ TEST(PluginLoader, DiscoverListsPluginsByKindThenNameAndReportsBrokenFiles) {
       fixtures.push_back(std::string(to_string(library->kind())) + " " + library->info().name);
     }
   }
-  EXPECT_EQ(fixtures, (std::vector<std::string>{
-                          "physics kinematic2d", "propagation test_propagation", "mac ideal_mac",
-                          "routing test_routing", "controller test_controller",
-                          "controller world_probe", "world test_world"}));
+  EXPECT_EQ(fixtures,
+            (std::vector<std::string>{"physics kinematic2d", "propagation test_propagation",
+                                      "mac ideal_mac", "routing busy_routing",
+                                      "routing test_routing", "controller test_controller",
+                                      "controller world_probe", "world test_world"}));
 
   std::vector<std::string> broken_files;
   for (const auto& file : broken) {
