@@ -173,6 +173,10 @@ TEST(Ns3Engine, WhatNs3CannotRunIsRefusedBeforeTheRunWithWhereAndWhy) {
        "802.11n has no constant mode of 6000000 bit/s"},
       {"network.ns3.data_mode=HtMcs7", "--set network.ns3.data_mode",
        "'HtMcs7' is no WifiMode of 802.11a"},
+      // A standard the schema does not know is refused once, without the checks that name it
+      // (which used to read past its end: found by fuzzing).
+      {"network.ns3.standard=80", "--set network.ns3.standard", "80211a"},
+      {"network.ns3.standard=802", "--set network.ns3.standard", "80211a"},
       {"network.ns3.rate_manager=minstrel --set network.ns3.data_mode=OfdmRate54Mbps",
        "--set network.ns3.data_mode", "applies only to the constant rate manager"},
       {"network.ns3.ip_routing=olsr", "--set network.ns3.ip_routing",

@@ -10,6 +10,13 @@
 
 namespace swarmnet {
 
+// Whether `standard` names a Wi-Fi standard the ns-3 engine maps (network.ns3.standard's
+// choices in scenario_schema.cpp).
+inline bool ns3_standard_known(std::string_view standard) {
+  return standard == "80211a" || standard == "80211b" || standard == "80211g" ||
+         standard == "80211n" || standard == "80211ac";
+}
+
 // The constant-rate mode of `standard` ("80211a", ...) sending `bps`, or nothing when the
 // standard has no such rate (802.11n and ac are named by MCS: no mode is derived for them).
 inline std::optional<std::string> ns3_mode_for_rate(std::string_view standard, double bps) {
