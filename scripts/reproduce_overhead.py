@@ -33,6 +33,8 @@ import pathlib
 import subprocess
 import sys
 
+import ns3_aodv_rules
+
 # The study's tables: ARGoS with the network simulator (ARGoS, network, sum) and standalone
 # (ARGoS, network), CPU seconds. Table II is ns-3, Table I ns-2; the standalone ARGoS column is the
 # same run in both.
@@ -99,11 +101,10 @@ def main():
                   "--set", f"arena.height_m={side}", "--set", f"duration_s={args.duration_s}",
                   "--quiet"]
         integrated, alone, replay = out / f"integrated-{n}", out / f"robot-alone-{n}", out / f"replay-{n}"
-        # ns-3.37's AODV's sequence-number rules (docs/ns3-engine.md): say so.
-        engine = ["--set", "network.engine=ns3", "--set",
-                  "network.routing.params.increment_seqno_on_break=false", "--set",
-                  "network.routing.params.rreq_invalidates_sender_seqno=true"
-                  ] if args.engine == "ns3" else []
+        # ns-3.37's AODV's sequence-number and control-message rules (docs/ns3-engine.md):
+        # say so.
+        engine = (["--set", "network.engine=ns3"] + ns3_aodv_rules.set_arguments()
+                  if args.engine == "ns3" else [])
         swarmnet(binary, "run", str(scenario), *common, *engine, "--out", str(integrated),
                  "--overwrite")
         swarmnet(binary, "run", str(scenario), *common, *ONE_HOP, "--out", str(alone), "--overwrite")

@@ -36,12 +36,13 @@ import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent.parent
 sys.path.insert(0, str(ROOT / "scripts"))
+import ns3_aodv_rules  # noqa: E402
 from seed_interval import student_interval  # noqa: E402
 # Every variant: ns-3.37's AODV's sequence-number rules (a broken route's number is not
-# incremented; a RREQ leaves the route to its sender without a valid number), which the native
-# engine is told to follow, so that the models correspond (docs/ns3-engine.md).
-ALIGNED = ["--set", "network.routing.params.increment_seqno_on_break=false",
-           "--set", "network.routing.params.rreq_invalidates_sender_seqno=true"]
+# incremented; a RREQ leaves the route to its sender without a valid number) and its four
+# control-message rules, which the native engine is told to follow, so that the models correspond
+# (docs/ns3-engine.md).
+ALIGNED = ns3_aodv_rules.set_arguments()
 VARIANTS = {"native_static": ["--set", "network.engine=native", "--set", "network.arp=static"],
             "ns3_static": ["--set", "network.engine=ns3", "--set", "network.arp=static"],
             "native": ["--set", "network.engine=native"],

@@ -11,8 +11,8 @@ time of both network halves measured on every row.
 
 Both sides run as ns-3 users run ns-3 by default: ARP by request and reply (SwarmNet
 `network.arp: ns3`, the replay's default) and AODV with layer-2 feedback (SwarmNet
-`link_layer_feedback: true`); AODV keeps ns-3.37's sequence-number rules
-(`increment_seqno_on_break: false`, `rreq_invalidates_sender_seqno: true`) either way. --aligned runs the setup the grid was aligned in
+`link_layer_feedback: true`); AODV keeps ns-3.37's sequence-number and control-message rules
+(validation_runner.NS3_AODV_RULES) either way. --aligned runs the setup the grid was aligned in
 before issue 19: no ARP frame (SwarmNet `network.arp: static`, the replay's --aligned) and no
 layer-2 feedback (validation_runner.SETUPS).
 

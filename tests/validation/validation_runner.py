@@ -8,7 +8,9 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
 import compare  # noqa: E402
+from ns3_aodv_rules import NS3_AODV_RULES  # noqa: E402
 
 SOURCE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -43,12 +45,15 @@ DISK_NETWORK = {
 #          auto-generated entries) and no layer-2 feedback (with auto-generated entries ns-3.37's
 #          AODV cannot map a neighbour to its MAC address, so no dropped frame reaches it).
 #
-# In both, SwarmNet's AODV keeps ns-3.37's sequence-number rules: ns-3.37 keeps a broken or expired
+# In both, SwarmNet's AODV keeps ns-3.37's rules (scripts/ns3_aodv_rules.py). Its sequence-number
+# rules: ns-3.37 keeps a broken or expired
 # route's sequence number where RFC 3561 6.11 increments it (docs/validation.md: on the dense row
 # its re-discoveries draw twice the RREPs), and a RREQ leaves the route to the neighbour that sent
 # it without a valid sequence number, so that no node answers for that neighbour until its next
-# HELLO (without it SwarmNet's discoveries end a ring earlier: issue 19's delay). SwarmNet's AODV
-# is compared like for like: ns-3's variant of the protocol, not SwarmNet's default.
+# HELLO (without it SwarmNet's discoveries end a ring earlier: issue 19's delay). Its four
+# control-message rules decide how RREPs, RERRs and the buffer move under load (docs/validation.md,
+# "The saturated rows"). SwarmNet's AODV is compared like for like: ns-3's variant of the
+# protocol, not SwarmNet's default.
 SETUPS = {
     "default": {"arp": "ns3", "link_layer_feedback": True, "replay": []},
     "aligned": {"arp": "static", "link_layer_feedback": False, "replay": ["--aligned"]},
@@ -69,7 +74,7 @@ def setup_name(aligned):
 
 def aodv_params(aligned=False):
     return {"link_layer_feedback": SETUPS[setup_name(aligned)]["link_layer_feedback"],
-            "increment_seqno_on_break": False, "rreq_invalidates_sender_seqno": True}
+            **NS3_AODV_RULES}
 
 
 def routing_choice(routing, aligned=False):

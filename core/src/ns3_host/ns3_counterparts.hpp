@@ -151,11 +151,19 @@ struct Ns3FixedBehaviour {
   std::string_view behaviour;  // what ns-3 does, for the refusal
 };
 
-inline constexpr std::array<Ns3FixedBehaviour, 9> kNs3FixedBehaviour{{
+inline constexpr std::array<Ns3FixedBehaviour, 13> kNs3FixedBehaviour{{
     {"aodv", "increment_seqno_on_break", 0,
      "ns-3.37's AODV does not increment a broken route's destination sequence number"},
     {"aodv", "rreq_invalidates_sender_seqno", 1,
      "ns-3.37's AODV leaves the route to a RREQ's sender without a valid sequence number"},
+    {"aodv", "rrep_over_invalid_reverse_route", 1,
+     "ns-3.37's AODV forwards a RREP over an invalid route to its originator too"},
+    {"aodv", "rrep_ip_ttl", 1,
+     "ns-3.37's AODV sends a RREP with an IP TTL of the replier's hop count to the originator"},
+    {"aodv", "rerr_to_valid_precursors", 1,
+     "ns-3.37's AODV sends a RERR only to precursors with a valid route, after a jitter"},
+    {"aodv", "queue_released_by_rrep_only", 1,
+     "ns-3.37's AODV sends buffered packets only on a RREP or when the discovery timer fires"},
     {"aodv", "enable_local_repair", 0, "ns-3.37's AODV has no local repair"},
     {"aodv", "rrep_ack_required", 0,
      "ns-3.37's AODV requests a RREP-ACK only when an intermediate node answers"},

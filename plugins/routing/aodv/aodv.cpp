@@ -18,6 +18,12 @@ std::uint32_t to_ms(SimTime duration) {
 
 SimTime from_ms(std::uint32_t ms) { return std::chrono::milliseconds(ms); }
 
+// An IP TTL of `hops` (ns-3 stores a hop count of up to 16 bits in an 8-bit TTL tag; a count
+// beyond 255 is clamped here rather than wrapped).
+std::uint8_t ttl_of(std::uint32_t hops) {
+  return static_cast<std::uint8_t>(std::min<std::uint32_t>(hops, 255));
+}
+
 // A delay of a whole number of milliseconds drawn uniformly from [0, largest] (ns-3.37 draws
 // its AODV jitters as UniformRandomVariable::GetInteger(0, 10) ms and its first HELLO as
 // GetInteger(0, 100) ms: two nodes that draw the same millisecond transmit together).
@@ -100,7 +106,8 @@ PluginInfo Aodv::info() {
       "RREQ's reserved byte carries its TTL. Counters (routing.*): control_rreq, control_rrep, "
       "control_rerr, control_rrep_ack, control_hello (transmissions, originated or relayed), "
       "route_discoveries, link_failures (MAC reports received), link_breaks (breaks that "
-      "invalidated a route), blacklisted, local_repairs, duplicates, malformed. "
+      "invalidated a route), blacklisted, local_repairs, duplicates, malformed, rrep_ttl_drops "
+      "(with rrep_ip_ttl). "
       "Departures from ns-3, all from RFC 3561: every route update follows section 6.2 (ns-3 "
       "overwrites reverse routes unconditionally); a destination sets its sequence number to "
       "the maximum of its own and the RREQ's (6.6.1); link breaks increment the sequence numbers "
@@ -108,7 +115,12 @@ PluginInfo Aodv::info() {
       "SwarmNet's own, for loop freedom: a RREQ leaves the route to the neighbour it came from "
       "with its sequence number, where ns-3 (and RFC 3561 6.5) mark the number unknown until the "
       "neighbour's next HELLO or RREP, so that meanwhile no node answers a RREQ for that "
-      "neighbour and discoveries reach further (rreq_invalidates_sender_seqno: true).",
+      "neighbour and discoveries reach further (rreq_invalidates_sender_seqno: true). Four "
+      "control-message rules of ns-3.37 are parameters too, RFC 3561's reading by default: a "
+      "RREP forwarded over an invalid reverse route (rrep_over_invalid_reverse_route), a "
+      "RREP's IP TTL (rrep_ip_ttl), RERRs only to precursors with a valid route and after a "
+      "jitter (rerr_to_valid_precursors), and buffered packets sent only on a RREP or at the "
+      "discovery timer (queue_released_by_rrep_only).",
       parameter_schema()};
 }
 
@@ -156,7 +168,7 @@ void Aodv::send(Packet packet) {
   }
   const NodeId destination = packet.destination;
   buffer(std::move(packet));
-  if (!discovery_timers_.contains(destination)) send_request(destination);
+  if (!discovery_under_way(destination)) send_request(destination);
 }
 
 void Aodv::receive(Packet packet, NodeId from) {
@@ -234,7 +246,11 @@ void Aodv::forward_data(Packet packet) {
   const RouteEntry* stale = table_.find(packet.destination, t);
   const std::uint32_t seq = stale != nullptr && stale->valid_seq ? stale->seq : 0;
   context_->drop(packet, DropReason::no_route);
-  if (!rate_allows(rerr_count_, params_.rerr_rate_limit)) return;
+  // ns-3.37 (SendRerrWhenNoRouteToForward) checks the limit but does not count this RERR.
+  const bool room = params_.rerr_to_valid_precursors
+                        ? rerr_rate_has_room()
+                        : rate_allows(rerr_count_, params_.rerr_rate_limit);
+  if (!room) return;
   Rerr rerr;
   rerr.destinations.push_back({packet.destination, seq});
   if (const RouteEntry* to_origin = table_.find_valid(packet.source, t)) {
@@ -399,6 +415,23 @@ void Aodv::give_up(NodeId destination) {
   queue_.drop_destination(destination, DropReason::no_route, now());
 }
 
+bool Aodv::discovery_under_way(NodeId destination) {
+  if (!params_.queue_released_by_rrep_only) return discovery_timers_.contains(destination);
+  // ns-3.37 (DeferredRouteOutput) asks for a route unless the entry is in search. A rate-limited
+  // request has no entry in search yet: its retry timer stands for it.
+  const RouteEntry* route = table_.find(destination, now());
+  if (route != nullptr) return route->state == RouteState::in_search;
+  return discovery_timers_.contains(destination);
+}
+
+void Aodv::end_discovery(NodeId destination) {
+  if (const auto it = discovery_timers_.find(destination); it != discovery_timers_.end()) {
+    context_->cancel(it->second);
+    discovery_timers_.erase(it);
+  }
+  repairing_.erase(destination);
+}
+
 bool Aodv::start_local_repair(const Packet& packet, RouteEntry& route) {
   if (!params_.enable_local_repair || packet.is_control() || packet.source == self_ ||
       route.hop_count > params_.max_repair_ttl() || discovery_timers_.contains(route.destination)) {
@@ -449,11 +482,10 @@ void Aodv::update_route_to_neighbor(NodeId neighbor) {
     route->expires = std::max(route->expires, t + params_.active_route_timeout);
     return;
   }
-  if (route->state == RouteState::in_search) {
-    // A discovery for this neighbour is under way; a direct route ends it.
-    context_->cancel(discovery_timers_[neighbor]);
-    discovery_timers_.erase(neighbor);
-    repairing_.erase(neighbor);
+  // A discovery for this neighbour is under way; a direct route ends it (ns-3.37 lets its timer
+  // run and send the buffer).
+  if (route->state == RouteState::in_search && !params_.queue_released_by_rrep_only) {
+    end_discovery(neighbor);
   }
   // The sequence number and its validity stay (ns-3 clears the validity, which lets any later
   // advertisement with the same number replace this route: a loop if it leads back through a
@@ -463,7 +495,7 @@ void Aodv::update_route_to_neighbor(NodeId neighbor) {
   route->hop_count = 1;
   route->rreq_count = 0;
   route->expires = std::max(route->expires, t + params_.active_route_timeout);
-  if (queue_.has(neighbor)) send_queued(neighbor);
+  if (!params_.queue_released_by_rrep_only && queue_.has(neighbor)) send_queued(neighbor);
 }
 
 void Aodv::receive_request(const Rreq& received, NodeId from) {
@@ -491,10 +523,8 @@ void Aodv::receive_request(const Rreq& received, NodeId from) {
     entry.expires = t + reverse_lifetime;
     to_origin = &table_.insert(std::move(entry));
   } else if (fresher(*to_origin, rreq.originator_seq, hops)) {
-    if (to_origin->state == RouteState::in_search) {
-      context_->cancel(discovery_timers_[rreq.originator]);
-      discovery_timers_.erase(rreq.originator);
-      repairing_.erase(rreq.originator);
+    if (to_origin->state == RouteState::in_search && !params_.queue_released_by_rrep_only) {
+      end_discovery(rreq.originator);
     }
     to_origin->seq = rreq.originator_seq;
     to_origin->valid_seq = true;
@@ -525,7 +555,10 @@ void Aodv::receive_request(const Rreq& received, NodeId from) {
   // with or without HELLOs. A purge this triggers never erases `to_origin` (it has just been
   // found at this instant), though it may invalidate it.
   update_neighbor(from, params_.hello_lifetime());
-  if (to_origin->is_valid() && queue_.has(rreq.originator)) send_queued(rreq.originator);
+  if (!params_.queue_released_by_rrep_only && to_origin->is_valid() &&
+      queue_.has(rreq.originator)) {
+    send_queued(rreq.originator);
+  }
   const bool reverse_usable = to_origin->is_valid();
 
   if (rreq.destination == self_) {
@@ -580,18 +613,19 @@ void Aodv::receive_reply(Rrep rrep, NodeId from) {
 
   if (rrep.originator == self_) {
     if (to_destination->is_valid()) {
-      if (const auto it = discovery_timers_.find(rrep.destination); it != discovery_timers_.end()) {
-        context_->cancel(it->second);
-        discovery_timers_.erase(it);
-      }
-      repairing_.erase(rrep.destination);
+      end_discovery(rrep.destination);
       send_queued(rrep.destination);
     }
     return;
   }
 
-  RouteEntry* to_origin = table_.find_valid(rrep.originator, t);
-  if (to_origin == nullptr || hops >= kMaxHopCount) return;  // no reverse route: drop
+  // No reverse route: drop. ns-3.37 forwards over any route not in search, an invalid one too.
+  RouteEntry* to_origin = params_.rrep_over_invalid_reverse_route
+                              ? table_.find(rrep.originator, t)
+                              : table_.find_valid(rrep.originator, t);
+  if (to_origin == nullptr || to_origin->state == RouteState::in_search || hops >= kMaxHopCount) {
+    return;
+  }
   to_origin->expires = std::max(to_origin->expires, t + params_.active_route_timeout);
   if (to_destination->is_valid()) {
     // Precursors (RFC 3561 6.7): each end learns who relies on it.
@@ -603,6 +637,14 @@ void Aodv::receive_reply(Rrep rrep, NodeId from) {
       next->insert_precursor(toward_origin);
     if (RouteEntry* prev = table_.find(toward_origin, t))
       prev->insert_precursor(toward_destination);
+  }
+  if (params_.rrep_ip_ttl) {
+    // ns-3.37 checks the IP TTL after the routes are updated, as the last step before forwarding.
+    if (rrep.ttl < 2) {
+      context_->count("rrep_ttl_drops");
+      return;
+    }
+    rrep.ttl = static_cast<std::uint8_t>(rrep.ttl - 1);
   }
   rrep.ack_required = false;
   send_reply(rrep, to_origin->next_hop);
@@ -620,12 +662,8 @@ void Aodv::receive_hello(const Rrep& hello) {
   } else {
     route->expires = std::max(route->expires, t + params_.hello_lifetime());
   }
-  if (route->state == RouteState::in_search) {
-    if (const auto it = discovery_timers_.find(neighbor); it != discovery_timers_.end()) {
-      context_->cancel(it->second);
-      discovery_timers_.erase(it);
-    }
-    repairing_.erase(neighbor);
+  if (route->state == RouteState::in_search && !params_.queue_released_by_rrep_only) {
+    end_discovery(neighbor);
   }
   if (!route->valid_seq || seq_not_older(hello.destination_seq, route->seq)) {
     route->seq = hello.destination_seq;
@@ -636,7 +674,7 @@ void Aodv::receive_hello(const Rrep& hello) {
   route->next_hop = neighbor;
   route->rreq_count = 0;
   if (params_.enable_hello) update_neighbor(neighbor, params_.hello_lifetime());
-  if (queue_.has(neighbor)) send_queued(neighbor);
+  if (!params_.queue_released_by_rrep_only && queue_.has(neighbor)) send_queued(neighbor);
 }
 
 void Aodv::receive_error(const Rerr& rerr, NodeId from) {
@@ -677,6 +715,7 @@ void Aodv::reply_as_destination(const Rreq& rreq, const RouteEntry& to_origin) {
   rrep.originator = rreq.originator;
   rrep.lifetime_ms = to_ms(params_.my_route_timeout);
   rrep.ack_required = params_.rrep_ack_required;
+  if (params_.rrep_ip_ttl) rrep.ttl = ttl_of(to_origin.hop_count);
   send_reply(rrep, to_origin.next_hop);
 }
 
@@ -691,6 +730,7 @@ void Aodv::reply_as_intermediate(const Rreq& rreq, RouteEntry& to_destination,
   rrep.lifetime_ms = to_ms(to_destination.expires - t);
   // ns-3: answering for a neighbour, the link may be unidirectional; ask for an acknowledgement.
   rrep.ack_required = params_.rrep_ack_required || to_destination.hop_count == 1;
+  if (params_.rrep_ip_ttl) rrep.ttl = ttl_of(to_origin.hop_count);
   to_destination.insert_precursor(to_origin.next_hop);
   to_origin.insert_precursor(to_destination.next_hop);
   send_reply(rrep, to_origin.next_hop);
@@ -701,6 +741,7 @@ void Aodv::reply_as_intermediate(const Rreq& rreq, RouteEntry& to_destination,
     gratuitous.destination_seq = to_origin.seq;
     gratuitous.originator = to_destination.destination;
     gratuitous.lifetime_ms = to_ms(to_origin.expires - t);
+    if (params_.rrep_ip_ttl) gratuitous.ttl = ttl_of(to_destination.hop_count);
     send_control(gratuitous, to_destination.next_hop);
   }
 }
@@ -732,18 +773,39 @@ void Aodv::send_hello() {
 void Aodv::send_error(const Rerr& rerr, const std::vector<NodeId>& precursors) {
   if (precursors.empty()) return;
   for (std::size_t first = 0; first < rerr.destinations.size(); first += Rerr::kMaxDestinations) {
-    if (!rate_allows(rerr_count_, params_.rerr_rate_limit)) return;
     Rerr part;
     part.no_delete = rerr.no_delete;
     const std::size_t last = std::min(rerr.destinations.size(), first + Rerr::kMaxDestinations);
     part.destinations.assign(rerr.destinations.begin() + static_cast<std::ptrdiff_t>(first),
                              rerr.destinations.begin() + static_cast<std::ptrdiff_t>(last));
+    if (params_.rerr_to_valid_precursors) {
+      if (!rerr_rate_has_room()) return;
+      send_error_to_valid_precursors(part, precursors);
+      continue;
+    }
+    if (!rate_allows(rerr_count_, params_.rerr_rate_limit)) return;
     if (precursors.size() == 1) {
       send_control(part, precursors.front());
     } else {
       broadcast_control(part);
     }
   }
+}
+
+void Aodv::send_error_to_valid_precursors(const Rerr& part, const std::vector<NodeId>& precursors) {
+  const SimTime t = now();
+  if (precursors.size() == 1) {
+    const NodeId precursor = precursors.front();
+    if (table_.find_valid(precursor, t) == nullptr) return;
+    ++rerr_count_;
+    // The route is looked up again when the jitter ends, as ns-3's socket does.
+    context_->schedule(jitter(), [this, part, precursor] { send_control(part, precursor); });
+    return;
+  }
+  const bool any_valid = std::any_of(precursors.begin(), precursors.end(), [&](NodeId node) {
+    return table_.find_valid(node, t) != nullptr;
+  });
+  if (any_valid) broadcast_control(part);
 }
 
 void Aodv::send_control(const Message& message, NodeId next_hop) {
@@ -764,7 +826,7 @@ void Aodv::send_control(const Message& message, NodeId next_hop) {
     return;
   }
   buffer(std::move(packet));
-  if (!discovery_timers_.contains(next_hop)) send_request(next_hop);
+  if (!discovery_under_way(next_hop)) send_request(next_hop);
 }
 
 void Aodv::transmit_control(Packet packet, const RouteEntry& route) {
@@ -876,16 +938,25 @@ void Aodv::hello_timer_expired() {
                      [this] { hello_timer_expired(); });
 }
 
-bool Aodv::rate_allows(std::uint32_t& counter, std::uint32_t limit) {
+void Aodv::turn_rate_window() {
   const std::int64_t window = now().count() / kRateWindow.count();
   if (window != rate_window_) {
     rate_window_ = window;
     rreq_count_ = 0;
     rerr_count_ = 0;
   }
+}
+
+bool Aodv::rate_allows(std::uint32_t& counter, std::uint32_t limit) {
+  turn_rate_window();
   if (counter >= limit) return false;
   ++counter;
   return true;
+}
+
+bool Aodv::rerr_rate_has_room() {
+  turn_rate_window();
+  return rerr_count_ < params_.rerr_rate_limit;
 }
 
 SimTime Aodv::next_rate_window() const {

@@ -64,6 +64,12 @@ class Aodv final : public Routing {
   void request_timer_expired(NodeId destination);
   void schedule_request_retry(NodeId destination);
   void give_up(NodeId destination);
+  // A discovery for `destination` is under way, and a packet for it only needs to wait. By
+  // default while its timer runs; with queue_released_by_rrep_only as ns-3.37 decides it, by the
+  // route being in search (its timer may outlive the search there).
+  [[nodiscard]] bool discovery_under_way(NodeId destination);
+  // Cancels the discovery for `destination`, if one runs (a local repair included).
+  void end_discovery(NodeId destination);
   bool start_local_repair(const Packet& packet, RouteEntry& route);
 
   // Control messages in.
@@ -80,6 +86,8 @@ class Aodv final : public Routing {
   void send_reply(const Rrep& rrep, NodeId next_hop);
   void send_hello();
   void send_error(const Rerr& rerr, const std::vector<NodeId>& precursors);
+  // ns-3.37's SendRerrMessage (rerr_to_valid_precursors): one RERR of at most 255 destinations.
+  void send_error_to_valid_precursors(const Rerr& part, const std::vector<NodeId>& precursors);
   void send_control(const Message& message, NodeId next_hop);
   void transmit_control(Packet packet, const RouteEntry& route);
   void broadcast_control(const Message& message);
@@ -98,7 +106,12 @@ class Aodv final : public Routing {
 
   // Timers.
   void hello_timer_expired();
+  // Counts one message against `limit` in this second's window, if it has room.
   bool rate_allows(std::uint32_t& counter, std::uint32_t limit);
+  // Whether this second's window has room for a RERR, without counting it (ns-3.37 checks its
+  // RERR limit before every RERR but counts only those unicast to a single precursor).
+  bool rerr_rate_has_room();
+  void turn_rate_window();
   [[nodiscard]] SimTime next_rate_window() const;
   [[nodiscard]] SimTime jitter();
   // `candidate` (seq, hops) should replace `entry` (RFC 3561 section 6.2).

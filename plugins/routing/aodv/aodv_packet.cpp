@@ -51,9 +51,10 @@ void encode(const Rrep& m, std::vector<std::uint8_t>& out) {
   out.clear();
   out.reserve(Rrep::kSize);
   out.push_back(static_cast<std::uint8_t>(MessageType::rrep));
-  out.push_back(
-      static_cast<std::uint8_t>(flag(m.repair, kRrepFlagR) | flag(m.ack_required, kRrepFlagA)));
-  out.push_back(static_cast<std::uint8_t>(m.prefix_size & kPrefixMask));
+  out.push_back(static_cast<std::uint8_t>(flag(m.repair, kRrepFlagR) |
+                                          flag(m.ack_required, kRrepFlagA) |
+                                          (m.prefix_size & kPrefixMask)));
+  out.push_back(m.ttl);
   out.push_back(m.hop_count);
   put_u32(out, m.destination);
   put_u32(out, m.destination_seq);
@@ -113,7 +114,8 @@ std::optional<Message> decode(std::span<const std::uint8_t> bytes) {
       Rrep m;
       m.repair = has(bytes[1], kRrepFlagR);
       m.ack_required = has(bytes[1], kRrepFlagA);
-      m.prefix_size = static_cast<std::uint8_t>(bytes[2] & kPrefixMask);
+      m.prefix_size = static_cast<std::uint8_t>(bytes[1] & kPrefixMask);
+      m.ttl = bytes[2];
       m.hop_count = bytes[3];
       m.destination = get_u32(bytes, 4);
       m.destination_seq = get_u32(bytes, 8);

@@ -6,15 +6,16 @@
 //
 //   RREQ     0 type=1 | 1 flags J R G D U | 2 ttl (*) | 3 hop count | 4 RREQ id | 8 destination |
 //            12 destination seq | 16 originator | 20 originator seq
-//   RREP     0 type=2 | 1 flags R A | 2 prefix size | 3 hop count | 4 destination |
-//            8 destination seq | 12 originator | 16 lifetime (ms)
+//   RREP     0 type=2 | 1 flags R A, prefix size (low 5 bits) | 2 ttl (*) | 3 hop count |
+//            4 destination | 8 destination seq | 12 originator | 16 lifetime (ms)
 //   RERR     0 type=3 | 1 flag N | 2 reserved | 3 destination count | then per destination:
 //            destination, destination seq
 //   RREP-ACK 0 type=4 | 1 reserved
 //
-// (*) The RFC's reserved byte carries the IP TTL of the RREQ, which ns-3 keeps in the IP header:
-// SwarmNet's 28-byte network header (swarmnet/packet.hpp) has no TTL field of its own. Data
-// packets carry no AODV header at all; their TTL is derived from Packet::hops.
+// (*) The RFC's reserved bits carry the IP TTL of a RREQ or RREP, which ns-3 keeps in the IP
+// header: SwarmNet's 28-byte network header (swarmnet/packet.hpp) has no TTL field of its own.
+// A RREP's TTL is 0 (none) unless rrep_ip_ttl is set. Data packets carry no AODV header at all;
+// their TTL is derived from Packet::hops.
 #pragma once
 
 #include <cstddef>
@@ -52,6 +53,7 @@ struct Rrep {
   bool repair = false;        // R (multicast, unused)
   bool ack_required = false;  // A: the receiver answers with a RREP-ACK
   std::uint8_t prefix_size = 0;
+  std::uint8_t ttl = 0;  // IP TTL (see above); 0: none
   std::uint8_t hop_count = 0;
   NodeId destination = kNoNode;
   std::uint32_t destination_seq = 0;

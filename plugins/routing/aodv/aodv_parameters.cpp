@@ -107,6 +107,32 @@ std::vector<ParamSpec> parameter_schema() {
                  "neighbour as an intermediate until a HELLO or a RREP from it gives one back; "
                  "false: the route keeps its number and its validity, which keeps routes loop "
                  "free (with true, a RREP with an equal number may replace the route)"),
+      bool_param("rrep_over_invalid_reverse_route", false,
+                 "true: ns-3.37's rule (RecvReply): a RREP is forwarded over any route to its "
+                 "originator that is not in search, an invalid one included (it stays invalid; "
+                 "its lifetime is extended to active_route_timeout_s, and the RREP goes to the "
+                 "route's next hop over a valid route to that neighbour, or waits for one); "
+                 "false: only over a valid reverse route (RFC 3561 6.7)"),
+      bool_param("rrep_ip_ttl", false,
+                 "true: ns-3.37's rule (SendReply, SendReplyByIntermediateNode, RecvReply): a "
+                 "RREP leaves with an IP TTL of its sender's hop count to the originator (a "
+                 "gratuitous RREP: to the destination), every forwarder takes one off, and one "
+                 "that receives it with a TTL below 2 drops it (counted as rrep_ttl_drops); "
+                 "false: a RREP is forwarded until it reaches its originator"),
+      bool_param("rerr_to_valid_precursors", false,
+                 "true: ns-3.37's rule (SendRerrMessage): a RERR is sent only if a precursor has "
+                 "a valid route (a single precursor without one gets none), after a jitter of "
+                 "whole milliseconds up to broadcast_jitter_max_s, and only RERRs unicast to a "
+                 "single precursor count toward rerr_rate_limit; false: a RERR leaves at once, "
+                 "a single precursor without a valid route is searched for, and every RERR "
+                 "counts"),
+      bool_param("queue_released_by_rrep_only", false,
+                 "true: ns-3.37's rule (RecvReply, RouteRequestTimerExpire): packets buffered "
+                 "for a destination leave only when a RREP for this node arrives or the "
+                 "discovery timer fires with a valid route; a HELLO, a RREQ or any AODV message "
+                 "that makes the route valid neither ends the discovery nor sends the buffer, so "
+                 "new packets take the route at once and overtake them; false: any route that "
+                 "becomes valid ends its discovery and sends its buffer"),
       bool_param("enable_broadcast", true,
                  "rebroadcast application broadcasts (with duplicate detection and data_ttl)"),
       bool_param("enable_local_repair", false,
@@ -160,6 +186,10 @@ AodvParameters parameters_from(const ParamSet& params) {
   p.link_failure_any_next_hop = params.text("link_failure_match") == "next_hop";
   p.increment_seqno_on_break = params.boolean("increment_seqno_on_break");
   p.rreq_invalidates_sender_seqno = params.boolean("rreq_invalidates_sender_seqno");
+  p.rrep_over_invalid_reverse_route = params.boolean("rrep_over_invalid_reverse_route");
+  p.rrep_ip_ttl = params.boolean("rrep_ip_ttl");
+  p.rerr_to_valid_precursors = params.boolean("rerr_to_valid_precursors");
+  p.queue_released_by_rrep_only = params.boolean("queue_released_by_rrep_only");
   p.enable_broadcast = params.boolean("enable_broadcast");
   p.enable_local_repair = params.boolean("enable_local_repair");
   p.local_add_ttl = count_param(params, "local_add_ttl");

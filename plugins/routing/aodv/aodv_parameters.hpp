@@ -39,6 +39,11 @@ struct AodvParameters {
   bool link_failure_any_next_hop = false;  // false: "neighbor_address" (ns-3); true: "next_hop"
   bool increment_seqno_on_break = true;
   bool rreq_invalidates_sender_seqno = false;
+  // ns-3.37's control-message rules (aodv-routing-protocol.cc); false is RFC 3561's reading.
+  bool rrep_over_invalid_reverse_route = false;
+  bool rrep_ip_ttl = false;
+  bool rerr_to_valid_precursors = false;
+  bool queue_released_by_rrep_only = false;
   bool enable_broadcast = true;
   bool enable_local_repair = false;
   std::uint32_t local_add_ttl = 2;

@@ -35,6 +35,7 @@ TEST(AodvPacket, RrepRoundTripsAndRecognisesHello) {
   Rrep rrep;
   rrep.ack_required = true;
   rrep.prefix_size = 5;
+  rrep.ttl = 6;
   rrep.hop_count = 4;
   rrep.destination = 11;
   rrep.destination_seq = 42;
@@ -43,7 +44,8 @@ TEST(AodvPacket, RrepRoundTripsAndRecognisesHello) {
   const auto bytes = encode(Message{rrep});
   ASSERT_EQ(bytes.size(), Rrep::kSize);
   EXPECT_EQ(bytes[0], 2);
-  EXPECT_EQ(bytes[1], 0x40);
+  EXPECT_EQ(bytes[1], 0x45);  // A, and the prefix size in the low bits
+  EXPECT_EQ(bytes[2], 6);     // the TTL in the reserved bits
   const auto decoded = decode(bytes);
   ASSERT_TRUE(decoded.has_value());
   EXPECT_EQ(std::get<Rrep>(*decoded), rrep);

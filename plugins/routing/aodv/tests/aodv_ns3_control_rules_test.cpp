@@ -1,0 +1,347 @@
+// ns-3.37's four control-message rules (aodv-routing-protocol.cc), each a parameter of the plugin
+// and each against SwarmNet's default reading of RFC 3561, on the SDK test kit (one node, node 0
+// of 10, with a fake routing context):
+//   rrep_over_invalid_reverse_route  RecvReply forwards a RREP over any route to its originator
+//                                    that is not in search, an invalid one included;
+//   rrep_ip_ttl                      a RREP's IP TTL is its sender's hop count to the originator,
+//                                    and a forwarder drops one that arrives below 2;
+//   rerr_to_valid_precursors         SendRerrMessage sends only to precursors with a valid route,
+//                                    after 0-10 ms of jitter, and counts only unicast RERRs;
+//   queue_released_by_rrep_only      buffered packets leave only on a RREP for this node or when
+//                                    the discovery timer fires.
+// Why they matter: docs/validation.md, "The saturated rows, and ns-3's control-message rules".
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "aodv_one_node.hpp"
+
+namespace swarmnet::aodv {
+namespace {
+
+using testing::PacketBuilder;
+using testing::ParamOverrides;
+
+class AodvNs3ControlRules : public AodvOneNode {
+ protected:
+  // `originator`'s RREQ for `destination`, `hops_before` hops old, relayed to this node by
+  // `from`: the reverse route to `originator` goes through `from`.
+  void rreq(NodeId from, NodeId originator, NodeId destination, std::uint8_t hops_before,
+            std::uint32_t id = 1) {
+    Rreq rreq;
+    rreq.originator = originator;
+    rreq.originator_seq = 3;
+    rreq.id = id;
+    rreq.hop_count = hops_before;
+    rreq.destination = destination;
+    rreq.unknown_seq = true;
+    rreq.gratuitous = true;
+    rreq.ttl = 1;  // not relayed further
+    hear(rreq, from);
+  }
+  // A RREP about `destination` (`hops_before` hops behind `from`) on its way to `originator`.
+  void rrep(NodeId from, NodeId destination, NodeId originator, std::uint8_t hops_before,
+            std::uint8_t ttl = 0) {
+    Rrep rrep;
+    rrep.destination = destination;
+    rrep.destination_seq = 7;
+    rrep.originator = originator;
+    rrep.hop_count = hops_before;
+    rrep.lifetime_ms = 10000;
+    rrep.ttl = ttl;
+    hear(rrep, from);
+  }
+  void data_from(NodeId neighbor, NodeId source, NodeId destination, std::uint64_t uid) {
+    aodv_->receive(PacketBuilder()
+                       .uid(uid)
+                       .from(source)
+                       .to(destination)
+                       .message(uid)
+                       .payload_bytes(50)
+                       .hops(1)
+                       .build(),
+                   neighbor);
+  }
+  static Packet data_to(NodeId destination, std::uint64_t uid) {
+    return PacketBuilder().uid(uid).from(0).to(destination).message(uid).payload_bytes(50).build();
+  }
+  void run(double seconds) { scheduler_.run_for(from_seconds(seconds)); }
+
+  struct Sent {
+    Message message;
+    NodeId next_hop;
+    SimTime at;
+  };
+  // The control messages of type T handed to the MAC, in order.
+  template <typename T>
+  [[nodiscard]] std::vector<Sent> sent() const {
+    std::vector<Sent> out;
+    for (const auto& item : node_.to_mac) {
+      if (!item.packet.is_control()) continue;
+      const std::optional<Message> message = decode(item.packet.header);
+      if (message && std::holds_alternative<T>(*message)) {
+        out.push_back({*message, item.next_hop, item.at});
+      }
+    }
+    return out;
+  }
+  // RREPs (HELLOs left out) handed to the MAC.
+  [[nodiscard]] std::vector<std::pair<Rrep, NodeId>> replies() const {
+    std::vector<std::pair<Rrep, NodeId>> out;
+    for (const Sent& s : sent<Rrep>()) {
+      const Rrep& rrep = std::get<Rrep>(s.message);
+      if (!rrep.is_hello()) out.emplace_back(rrep, s.next_hop);
+    }
+    return out;
+  }
+  // RERRs that report `destination`.
+  [[nodiscard]] std::vector<Sent> errors_about(NodeId destination) const {
+    std::vector<Sent> out;
+    for (const Sent& s : sent<Rerr>()) {
+      const auto& list = std::get<Rerr>(s.message).destinations;
+      if (std::any_of(list.begin(), list.end(),
+                      [&](const auto& d) { return d.destination == destination; })) {
+        out.push_back(s);
+      }
+    }
+    return out;
+  }
+  // RREQs this node originated for `destination`.
+  [[nodiscard]] std::size_t requests_for(NodeId destination) const {
+    std::size_t n = 0;
+    for (const Sent& s : sent<Rreq>()) {
+      const Rreq& r = std::get<Rreq>(s.message);
+      if (r.originator == 0 && r.destination == destination) ++n;
+    }
+    return n;
+  }
+  // Data packets handed to the MAC, by uid, in order.
+  [[nodiscard]] std::vector<std::uint64_t> data_sent() const {
+    std::vector<std::uint64_t> uids;
+    for (const auto& item : node_.to_mac) {
+      if (!item.packet.is_control()) uids.push_back(item.packet.uid);
+    }
+    return uids;
+  }
+  [[nodiscard]] const RouteEntry* route(NodeId destination) const {
+    const auto& entries = aodv_->routing_table().entries();
+    const auto it = entries.find(destination);
+    return it == entries.end() ? nullptr : &it->second;
+  }
+};
+
+// ---- rrep_over_invalid_reverse_route -------------------------------------------------------
+
+// The reverse route to 7 (through neighbour 5) has expired; HELLOs keep the route to 5 itself
+// valid. A RREP for 7 then arrives from 6.
+class RrepOverInvalidReverseRoute : public AodvNs3ControlRules,
+                                    public ::testing::WithParamInterface<bool> {
+ protected:
+  void expire_reverse_route() {
+    make(ParamOverrides{{"rrep_over_invalid_reverse_route", GetParam()}});
+    rreq(5, 7, 8, 1);  // reverse route to 7 via 5, 2 hops, for 5.44 s
+    for (int second = 1; second <= 6; ++second) {
+      run(1.0);
+      hello_from(5, second);
+      hello_from(6, second);
+    }
+    run(0.5);  // past the housekeeping purge at 6 s, which ages the route (5.44 s)
+    ASSERT_NE(route(7), nullptr);
+    ASSERT_EQ(route(7)->state, RouteState::invalid);
+    ASSERT_TRUE(route(5)->is_valid());
+  }
+};
+
+TEST_P(RrepOverInvalidReverseRoute, DecidesWhetherARrepTravelsOverAnInvalidReverseRoute) {
+  expire_reverse_route();
+  const SimTime expires_before = route(7)->expires;
+  rrep(6, 8, 7, 1);
+  const bool ns3 = GetParam();
+  ASSERT_EQ(replies().size(), ns3 ? 1U : 0U);
+  if (ns3) {
+    EXPECT_EQ(replies().front().second, 5U);          // the invalid route's next hop
+    EXPECT_EQ(route(7)->state, RouteState::invalid);  // it stays invalid, living longer
+    EXPECT_EQ(route(7)->expires, std::max(expires_before, scheduler_.now() + from_seconds(3.0)));
+  }
+  EXPECT_TRUE(route(8)->is_valid());  // the forward route is learned either way
+}
+
+TEST_P(RrepOverInvalidReverseRoute, NeverTravelsOverARouteInSearch) {
+  expire_reverse_route();
+  aodv_->send(data_to(7, 900));  // a discovery for 7: the route is in search
+  ASSERT_EQ(route(7)->state, RouteState::in_search);
+  rrep(6, 8, 7, 1);
+  EXPECT_TRUE(replies().empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RrepOverInvalidReverseRoute, ::testing::Bool(),
+                         [](const auto& info) { return info.param ? "ns3" : "rfc"; });
+
+// ---- rrep_ip_ttl --------------------------------------------------------------------------
+
+TEST_F(AodvNs3ControlRules, ADestinationsRrepCarriesItsHopCountToTheOriginatorAsTtl) {
+  make(ParamOverrides{{"rrep_ip_ttl", true}});
+  rreq(5, 7, 0, 2);  // 7's RREQ for this node, 3 hops from 7
+  ASSERT_EQ(replies().size(), 1U);
+  EXPECT_EQ(replies().front().first.ttl, 3U);
+  EXPECT_EQ(replies().front().second, 5U);
+}
+
+TEST_F(AodvNs3ControlRules, AnIntermediateRrepAndItsGratuitousRrepCarryTheirHopCounts) {
+  make(ParamOverrides{{"rrep_ip_ttl", true}});
+  rrep(6, 8, 0, 1);  // a route to 8 through 6: 2 hops
+  rreq(5, 7, 8, 2);  // 7's RREQ for 8 (gratuitous flag set), 3 hops from 7
+  const auto out = replies();
+  ASSERT_EQ(out.size(), 2U);
+  EXPECT_EQ(out[0].second, 5U);  // to the originator: its hop count to 7
+  EXPECT_EQ(out[0].first.ttl, 3U);
+  EXPECT_EQ(out[1].second, 6U);  // the gratuitous RREP to 8: the hop count to 8
+  EXPECT_EQ(out[1].first.ttl, 2U);
+}
+
+TEST_F(AodvNs3ControlRules, AForwarderTakesOneOffTheTtlAndDropsARrepBelowTwo) {
+  make(ParamOverrides{{"rrep_ip_ttl", true}});
+  rreq(5, 7, 8, 1);  // reverse route to 7 via 5
+  rrep(6, 8, 7, 1, 2);
+  ASSERT_EQ(replies().size(), 1U);
+  EXPECT_EQ(replies().front().first.ttl, 1U);
+  rrep(6, 9, 7, 1, 1);  // arrives with TTL 1: the routes are learned, the RREP goes no further
+  EXPECT_EQ(replies().size(), 1U);
+  EXPECT_EQ(node_.counter("rrep_ttl_drops"), 1U);
+  EXPECT_TRUE(route(9)->is_valid());
+  EXPECT_TRUE(route(9)->has_precursor(5));
+}
+
+TEST_F(AodvNs3ControlRules, ByDefaultARrepHasNoTtlAndTravelsToItsOriginator) {
+  make();
+  rreq(5, 7, 0, 2);
+  ASSERT_EQ(replies().size(), 1U);
+  EXPECT_EQ(replies().front().first.ttl, 0U);
+  rreq(5, 7, 8, 1, 2);
+  rrep(6, 8, 7, 1, 1);  // a TTL means nothing here
+  EXPECT_EQ(replies().size(), 2U);
+  EXPECT_EQ(node_.counter("rrep_ttl_drops"), 0U);
+}
+
+// ---- rerr_to_valid_precursors -------------------------------------------------------------
+
+// This node relays 7's flow to 8: route to 8 via 6 with precursor 5. The link to 6 breaks.
+class RerrToValidPrecursors : public AodvNs3ControlRules,
+                              public ::testing::WithParamInterface<bool> {
+ protected:
+  void relay_then_break(bool precursor_route_valid) {
+    make(ParamOverrides{{"rerr_to_valid_precursors", GetParam()}});
+    rreq(5, 7, 8, 1);
+    rrep(6, 8, 7, 1);
+    ASSERT_TRUE(route(8)->has_precursor(5));
+    // HELLOs from 6 keep its link; 5 is heard from only while `precursor_route_valid`.
+    for (int second = 1; second <= 4; ++second) {
+      run(1.0);
+      hello_from(6, second);
+      if (precursor_route_valid) hello_from(5, second);
+    }
+    ASSERT_TRUE(route(8)->is_valid());
+    ASSERT_EQ(route(5) != nullptr && route(5)->is_valid(), precursor_route_valid);
+    broke_at_ = scheduler_.now();
+    aodv_->link_failed(data_to(8, 901), 6);
+    ASSERT_FALSE(route(8)->is_valid());
+  }
+  SimTime broke_at_{};
+};
+
+TEST_P(RerrToValidPrecursors, AValidPrecursorGetsTheRerrAtOnceOrAfterJitter) {
+  relay_then_break(true);
+  const bool ns3 = GetParam();
+  EXPECT_EQ(errors_about(8).size(), ns3 ? 0U : 1U);  // ns-3 waits 0-10 ms
+  run(0.011);
+  const auto errors = errors_about(8);
+  ASSERT_EQ(errors.size(), 1U);
+  EXPECT_EQ(errors.front().next_hop, 5U);  // unicast to the single precursor
+  EXPECT_LE(errors.front().at - broke_at_, from_seconds(0.010));
+  if (!ns3) {
+    EXPECT_EQ(errors.front().at, broke_at_);
+  }
+}
+
+TEST_P(RerrToValidPrecursors, APrecursorWithoutAValidRouteGetsNoneOrIsSearchedFor) {
+  relay_then_break(false);
+  run(0.011);
+  const bool ns3 = GetParam();
+  EXPECT_TRUE(errors_about(8).empty());  // no route to 5 either way
+  // SwarmNet buffers the RERR and searches for 5; ns-3 sends nothing at all.
+  EXPECT_EQ(requests_for(5), ns3 ? 0U : 1U);
+  EXPECT_EQ(aodv_->request_queue().has(5), !ns3);
+}
+
+TEST_P(RerrToValidPrecursors, OnlyUnicastRerrsCountTowardTheRateLimit) {
+  make(ParamOverrides{{"rerr_to_valid_precursors", GetParam()}});
+  // Data of 7 for 9 reaches this node, which has no route to 9 and none back to 7: each packet
+  // is dropped and answered by a broadcast RERR, 12 of them within one second.
+  for (std::uint64_t uid = 1; uid <= 12; ++uid) data_from(5, 7, 9, 100 + uid);
+  run(0.011);
+  EXPECT_EQ(node_.dropped.size(), 12U);
+  EXPECT_EQ(errors_about(9).size(), GetParam() ? 12U : 10U);  // rerr_rate_limit 10
+}
+
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RerrToValidPrecursors, ::testing::Bool(),
+                         [](const auto& info) { return info.param ? "ns3" : "rfc"; });
+
+// ---- queue_released_by_rrep_only ----------------------------------------------------------
+
+class QueueReleasedByRrepOnly : public AodvNs3ControlRules,
+                                public ::testing::WithParamInterface<bool> {
+ protected:
+  void make_rule() { make(ParamOverrides{{"queue_released_by_rrep_only", GetParam()}}); }
+};
+
+TEST_P(QueueReleasedByRrepOnly, AHelloEndsTheDiscoveryOrNewPacketsOvertakeTheBuffer) {
+  make_rule();
+  aodv_->send(data_to(5, 1));  // no route to 5: buffered, a RREQ (ring timeout 240 ms)
+  ASSERT_TRUE(aodv_->discovering(5));
+  run(0.05);
+  hello_from(5);  // the route to 5 is valid now
+  aodv_->send(data_to(5, 2));
+  if (!GetParam()) {
+    EXPECT_FALSE(aodv_->discovering(5));
+    EXPECT_EQ(data_sent(), (std::vector<std::uint64_t>{1, 2}));  // the buffer went at once
+    return;
+  }
+  EXPECT_TRUE(aodv_->discovering(5));                       // the timer still runs
+  EXPECT_EQ(data_sent(), (std::vector<std::uint64_t>{2}));  // the new packet overtook
+  EXPECT_TRUE(aodv_->request_queue().has(5));
+  run(0.25);  // the discovery timer fires with a valid route: the buffer leaves
+  EXPECT_EQ(data_sent(), (std::vector<std::uint64_t>{2, 1}));
+  EXPECT_FALSE(aodv_->discovering(5));
+  EXPECT_EQ(requests_for(5), 1U);  // no second ring
+}
+
+TEST_P(QueueReleasedByRrepOnly, ARrepForThisNodeSendsTheBufferEitherWay) {
+  make_rule();
+  aodv_->send(data_to(8, 1));
+  aodv_->send(data_to(8, 2));
+  run(0.05);
+  rrep(6, 8, 0, 1);
+  EXPECT_EQ(data_sent(), (std::vector<std::uint64_t>{1, 2}));
+  EXPECT_FALSE(aodv_->discovering(8));
+}
+
+TEST_P(QueueReleasedByRrepOnly, ARreqFromTheDestinationReleasesTheBufferOnlyByDefault) {
+  make_rule();
+  aodv_->send(data_to(7, 1));
+  run(0.05);
+  rreq(5, 7, 8, 1);  // 7's own RREQ (for 8) gives a valid route to 7 through 5
+  ASSERT_TRUE(route(7)->is_valid());
+  EXPECT_EQ(data_sent().size(), GetParam() ? 0U : 1U);
+  run(0.25);
+  EXPECT_EQ(data_sent(), (std::vector<std::uint64_t>{1}));
+}
+
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, QueueReleasedByRrepOnly, ::testing::Bool(),
+                         [](const auto& info) { return info.param ? "ns3" : "rfc"; });
+
+}  // namespace
+}  // namespace swarmnet::aodv

@@ -1,0 +1,26 @@
+"""ns-3.37's AODV as SwarmNet's `aodv` plugin describes it: the parameters that make the plugin
+behave as ns-3.37's aodv-routing-protocol.cc does where it departs from RFC 3561 (docs/plugins.md,
+aodv; docs/validation.md, "The saturated rows, and ns-3's control-message rules").
+
+Two sequence-number rules (a broken route keeps its number; a RREQ leaves the route to its sender
+without a valid number) and four control-message rules (a RREP forwarded over an invalid reverse
+route; a RREP's IP TTL; RERRs only to precursors with a valid route, after a jitter; buffered
+packets sent only on a RREP or at the discovery timer). The ns-3 engine refuses AODV without them;
+the validation grid and the engine benchmark give them to SwarmNet's side so that both sides run
+the same protocol.
+"""
+
+NS3_AODV_RULES = {
+    "increment_seqno_on_break": False,
+    "rreq_invalidates_sender_seqno": True,
+    "rrep_over_invalid_reverse_route": True,
+    "rrep_ip_ttl": True,
+    "rerr_to_valid_precursors": True,
+    "queue_released_by_rrep_only": True,
+}
+
+
+def set_arguments(prefix="network.routing.params"):
+    """The rules as `swarmnet run` --set arguments."""
+    return [arg for name, value in NS3_AODV_RULES.items()
+            for arg in ("--set", f"{prefix}.{name}={str(value).lower()}")]
