@@ -424,6 +424,16 @@ bool Aodv::discovery_under_way(NodeId destination) {
   return discovery_timers_.contains(destination);
 }
 
+void Aodv::end_search_early(const RouteEntry& route) {
+  if (route.state == RouteState::in_search && !params_.queue_released_by_rrep_only) {
+    end_discovery(route.destination);
+  }
+}
+
+void Aodv::release_buffer_early(NodeId destination) {
+  if (!params_.queue_released_by_rrep_only && queue_.has(destination)) send_queued(destination);
+}
+
 void Aodv::end_discovery(NodeId destination) {
   if (const auto it = discovery_timers_.find(destination); it != discovery_timers_.end()) {
     context_->cancel(it->second);
@@ -482,11 +492,7 @@ void Aodv::update_route_to_neighbor(NodeId neighbor) {
     route->expires = std::max(route->expires, t + params_.active_route_timeout);
     return;
   }
-  // A discovery for this neighbour is under way; a direct route ends it (ns-3.37 lets its timer
-  // run and send the buffer).
-  if (route->state == RouteState::in_search && !params_.queue_released_by_rrep_only) {
-    end_discovery(neighbor);
-  }
+  end_search_early(*route);
   // The sequence number and its validity stay (ns-3 clears the validity, which lets any later
   // advertisement with the same number replace this route: a loop if it leads back through a
   // node that routes via this one).
@@ -495,7 +501,7 @@ void Aodv::update_route_to_neighbor(NodeId neighbor) {
   route->hop_count = 1;
   route->rreq_count = 0;
   route->expires = std::max(route->expires, t + params_.active_route_timeout);
-  if (!params_.queue_released_by_rrep_only && queue_.has(neighbor)) send_queued(neighbor);
+  release_buffer_early(neighbor);
 }
 
 void Aodv::receive_request(const Rreq& received, NodeId from) {
@@ -523,9 +529,7 @@ void Aodv::receive_request(const Rreq& received, NodeId from) {
     entry.expires = t + reverse_lifetime;
     to_origin = &table_.insert(std::move(entry));
   } else if (fresher(*to_origin, rreq.originator_seq, hops)) {
-    if (to_origin->state == RouteState::in_search && !params_.queue_released_by_rrep_only) {
-      end_discovery(rreq.originator);
-    }
+    end_search_early(*to_origin);
     to_origin->seq = rreq.originator_seq;
     to_origin->valid_seq = true;
     to_origin->next_hop = from;
@@ -555,10 +559,7 @@ void Aodv::receive_request(const Rreq& received, NodeId from) {
   // with or without HELLOs. A purge this triggers never erases `to_origin` (it has just been
   // found at this instant), though it may invalidate it.
   update_neighbor(from, params_.hello_lifetime());
-  if (!params_.queue_released_by_rrep_only && to_origin->is_valid() &&
-      queue_.has(rreq.originator)) {
-    send_queued(rreq.originator);
-  }
+  if (to_origin->is_valid()) release_buffer_early(rreq.originator);
   const bool reverse_usable = to_origin->is_valid();
 
   if (rreq.destination == self_) {
@@ -662,9 +663,7 @@ void Aodv::receive_hello(const Rrep& hello) {
   } else {
     route->expires = std::max(route->expires, t + params_.hello_lifetime());
   }
-  if (route->state == RouteState::in_search && !params_.queue_released_by_rrep_only) {
-    end_discovery(neighbor);
-  }
+  end_search_early(*route);
   if (!route->valid_seq || seq_not_older(hello.destination_seq, route->seq)) {
     route->seq = hello.destination_seq;
   }
@@ -674,7 +673,7 @@ void Aodv::receive_hello(const Rrep& hello) {
   route->next_hop = neighbor;
   route->rreq_count = 0;
   if (params_.enable_hello) update_neighbor(neighbor, params_.hello_lifetime());
-  if (!params_.queue_released_by_rrep_only && queue_.has(neighbor)) send_queued(neighbor);
+  release_buffer_early(neighbor);
 }
 
 void Aodv::receive_error(const Rerr& rerr, NodeId from) {

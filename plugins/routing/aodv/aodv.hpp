@@ -70,6 +70,12 @@ class Aodv final : public Routing {
   [[nodiscard]] bool discovery_under_way(NodeId destination);
   // Cancels the discovery for `destination`, if one runs (a local repair included).
   void end_discovery(NodeId destination);
+  // A route became valid through something other than a RREP for this node (a HELLO, a RREQ, any
+  // AODV message from the neighbour). By default that ends the search for it and sends its
+  // buffer; with queue_released_by_rrep_only (ns-3.37) both wait for the discovery timer.
+  // `route` is the entry as it was before the update (its state tells whether it was in search).
+  void end_search_early(const RouteEntry& route);
+  void release_buffer_early(NodeId destination);
   bool start_local_repair(const Packet& packet, RouteEntry& route);
 
   // Control messages in.
