@@ -38,7 +38,7 @@ class FakeWorldContext final : public WorldContext {
     std::string kind;
     std::string state;
     Vec2 position;
-    double radius_m;
+    double radius_m = 0.0;
   };
   std::map<std::uint32_t, ShownObject> shown;
 
