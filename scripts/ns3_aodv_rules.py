@@ -5,7 +5,11 @@ aodv; docs/validation.md, "The saturated rows, and ns-3's control-message rules"
 Two sequence-number rules (a broken route keeps its number; a RREQ leaves the route to its sender
 without a valid number) and four control-message rules (a RREP forwarded over an invalid reverse
 route; a RREP's IP TTL; RERRs only to precursors with a valid route, after a jitter; buffered
-packets sent only on a RREP or at the discovery timer). The ns-3 engine refuses AODV without them;
+packets sent only on a RREP or at the discovery timer), and three route-update rules (a RREQ
+overwrites the reverse route whatever its freshness; a message from a neighbour leaves its route
+with number 0, unknown; a destination increments its number only when asked for exactly one
+more), and ns-3's IP under its unicast messages (a RREP, RERR or RREP-ACK takes the route to its
+neighbour, and a node on the way relays it as IP). The ns-3 engine refuses AODV without them;
 the validation grid and the engine benchmark give them to SwarmNet's side so that both sides run
 the same protocol.
 """
@@ -17,6 +21,10 @@ NS3_AODV_RULES = {
     "rrep_ip_ttl": True,
     "rerr_to_valid_precursors": True,
     "queue_released_by_rrep_only": True,
+    "rreq_overwrites_reverse_route": True,
+    "neighbor_route_forgets_seqno": True,
+    "reply_seqno_plus_one_only": True,
+    "control_via_route_to_neighbor": True,
 }
 
 

@@ -151,7 +151,7 @@ struct Ns3FixedBehaviour {
   std::string_view behaviour;  // what ns-3 does, for the refusal
 };
 
-inline constexpr std::array<Ns3FixedBehaviour, 13> kNs3FixedBehaviour{{
+inline constexpr std::array<Ns3FixedBehaviour, 17> kNs3FixedBehaviour{{
     {"aodv", "increment_seqno_on_break", 0,
      "ns-3.37's AODV does not increment a broken route's destination sequence number"},
     {"aodv", "rreq_invalidates_sender_seqno", 1,
@@ -164,6 +164,18 @@ inline constexpr std::array<Ns3FixedBehaviour, 13> kNs3FixedBehaviour{{
      "ns-3.37's AODV sends a RERR only to precursors with a valid route, after a jitter"},
     {"aodv", "queue_released_by_rrep_only", 1,
      "ns-3.37's AODV sends buffered packets only on a RREP or when the discovery timer fires"},
+    {"aodv", "rreq_overwrites_reverse_route", 1,
+     "ns-3.37's AODV makes a RREQ's sender the next hop to its originator whatever the route's "
+     "freshness"},
+    {"aodv", "neighbor_route_forgets_seqno", 1,
+     "ns-3.37's AODV gives a neighbour's route that an AODV message makes one hop sequence "
+     "number 0, marked unknown"},
+    {"aodv", "reply_seqno_plus_one_only", 1,
+     "ns-3.37's AODV destination increments its sequence number only when asked for exactly one "
+     "more"},
+    {"aodv", "control_via_route_to_neighbor", 1,
+     "ns-3.37's AODV sends a unicast message to a neighbour as an IP datagram along the route to "
+     "it"},
     {"aodv", "enable_local_repair", 0, "ns-3.37's AODV has no local repair"},
     {"aodv", "rrep_ack_required", 0,
      "ns-3.37's AODV requests a RREP-ACK only when an intermediate node answers"},

@@ -108,10 +108,14 @@ PluginInfo Aodv::info() {
       "route_discoveries, link_failures (MAC reports received), link_breaks (breaks that "
       "invalidated a route), blacklisted, local_repairs, duplicates, malformed, rrep_ttl_drops "
       "(with rrep_ip_ttl). "
-      "Departures from ns-3, all from RFC 3561: every route update follows section 6.2 (ns-3 "
-      "overwrites reverse routes unconditionally); a destination sets its sequence number to "
-      "the maximum of its own and the RREQ's (6.6.1); link breaks increment the sequence numbers "
-      "they report (6.11), and so do expiring routes (increment_seqno_on_break). One more, "
+      "Departures from ns-3, all from RFC 3561 and each a parameter with ns-3.37's reading: "
+      "every route update follows section 6.2 (ns-3 overwrites reverse routes unconditionally: "
+      "rreq_overwrites_reverse_route; it makes a neighbour's route forget its sequence number: "
+      "neighbor_route_forgets_seqno); a destination sets its sequence number to the maximum of "
+      "its own and the RREQ's (6.6.1; reply_seqno_plus_one_only); link breaks increment the "
+      "sequence numbers they report (6.11), and so do expiring routes "
+      "(increment_seqno_on_break); a unicast message goes straight to its neighbour, where "
+      "ns-3's IP takes the route to it (control_via_route_to_neighbor). One more, "
       "SwarmNet's own, for loop freedom: a RREQ leaves the route to the neighbour it came from "
       "with its sequence number, where ns-3 (and RFC 3561 6.5) mark the number unknown until the "
       "neighbour's next HELLO or RREP, so that meanwhile no node answers a RREQ for that "
@@ -193,19 +197,28 @@ void Aodv::receive(Packet packet, NodeId from) {
     context_->count("malformed");
     return;
   }
+  if (params_.control_via_route_to_neighbor && packet.destination != kBroadcast &&
+      packet.destination != self_) {
+    relay_control(std::move(packet), std::move(*message));
+    return;
+  }
+  // ns-3.37's AODV knows the sender by the datagram's IP source: the link sender, unless a
+  // node relayed it (control_via_route_to_neighbor), and then it takes the originator for a
+  // neighbour all the same.
+  const NodeId sender = params_.control_via_route_to_neighbor ? packet.source : from;
   // ns-3.37 (RecvAodv) makes the sender a one-hop route on every AODV message it hears, before
   // looking at it: duplicate RREQs and copies of our own RREQs too. In a flood a node thus learns
   // a direct route to every neighbour that relays it, not only to the first (the neighbour table
   // is not touched: only HELLOs, new RREQs and traffic feed it).
-  update_route_to_neighbor(from);
+  update_route_to_neighbor(sender);
   if (auto* rreq = std::get_if<Rreq>(&*message)) {
-    receive_request(*rreq, from);
+    receive_request(*rreq, sender);
   } else if (auto* rrep = std::get_if<Rrep>(&*message)) {
-    receive_reply(*rrep, from);
+    receive_reply(*rrep, sender);
   } else if (auto* rerr = std::get_if<Rerr>(&*message)) {
-    receive_error(*rerr, from);
+    receive_error(*rerr, sender);
   } else {
-    receive_ack(from);
+    receive_ack(sender);
   }
 }
 
@@ -225,27 +238,65 @@ void Aodv::forward_data(Packet packet) {
     context_->drop(packet, DropReason::ttl_expired);
     return;
   }
-  const SimTime t = now();
-  if (const RouteEntry* route = table_.find_valid(packet.destination, t)) {
+  if (const RouteEntry* route = table_.find_valid(packet.destination, now())) {
     const RouteEntry to_destination = *route;
-    // RFC 3561 6.2: using a route keeps it, its next hop, the source and the previous hop alive.
-    table_.refresh(packet.source, params_.active_route_timeout, t);
-    const RouteEntry* to_origin = table_.find(packet.source, t);
-    const NodeId previous_hop = to_origin != nullptr ? to_origin->next_hop : kNoNode;
-    if (previous_hop != kNoNode) table_.refresh(previous_hop, params_.active_route_timeout, t);
-    // ns-3.37 (Forwarding) also keeps both neighbours alive: a relay does not learn from
-    // forwarding that its next hop has gone (only HELLO loss or the MAC tells it). The packet
-    // goes out on the route it found even if a purge these updates trigger breaks it (ns-3 has
-    // taken its Ipv4Route by then).
-    update_neighbor(to_destination.next_hop, params_.active_route_timeout);
-    if (previous_hop != kNoNode) update_neighbor(previous_hop, params_.active_route_timeout);
+    keep_forwarding_routes_alive(packet, to_destination);
     transmit_data(std::move(packet), to_destination);
     return;
   }
-  // No route: RERR to the source (RFC 3561 6.11 case ii) and drop.
+  context_->drop(packet, DropReason::no_route);
+  report_no_route(packet);
+}
+
+void Aodv::relay_control(Packet packet, Message message) {
+  // ns-3.37: the datagram is for another node, so IP forwards it (RouteInput, Forwarding) as it
+  // would data, and IpForward takes one off its TTL and drops it at 0. A RREP's TTL rides in
+  // its reserved bits (rrep_ip_ttl; without it, data_ttl's); RERRs and RREP-ACKs leave with 1.
+  const RouteEntry* route = table_.find_valid(packet.destination, now());
+  if (route == nullptr) {
+    context_->drop(packet, DropReason::no_route);
+    report_no_route(packet);
+    return;
+  }
+  const RouteEntry to_destination = *route;
+  keep_forwarding_routes_alive(packet, to_destination);
+  auto* rrep = std::get_if<Rrep>(&message);
+  const std::uint32_t ttl =
+      rrep == nullptr ? 1U : (params_.rrep_ip_ttl ? std::uint32_t{rrep->ttl} : params_.data_ttl);
+  if (ttl <= 1) {
+    context_->drop(packet, DropReason::ttl_expired);
+    return;
+  }
+  if (rrep != nullptr && params_.rrep_ip_ttl) {
+    rrep->ttl = static_cast<std::uint8_t>(ttl - 1);
+    packet.header.clear();
+    encode(*rrep, packet.header);
+  }
+  context_->count(counter_name(message));
+  context_->trace_forward(packet);
+  context_->send_to_mac(std::move(packet), to_destination.next_hop);
+}
+
+void Aodv::keep_forwarding_routes_alive(const Packet& packet, const RouteEntry& to_destination) {
+  const SimTime t = now();
+  // RFC 3561 6.2: using a route keeps it, its next hop, the source and the previous hop alive.
+  table_.refresh(packet.source, params_.active_route_timeout, t);
+  const RouteEntry* to_origin = table_.find(packet.source, t);
+  const NodeId previous_hop = to_origin != nullptr ? to_origin->next_hop : kNoNode;
+  if (previous_hop != kNoNode) table_.refresh(previous_hop, params_.active_route_timeout, t);
+  // ns-3.37 (Forwarding) also keeps both neighbours alive: a relay does not learn from
+  // forwarding that its next hop has gone (only HELLO loss or the MAC tells it). The packet
+  // goes out on the route it found even if a purge these updates trigger breaks it (ns-3 has
+  // taken its Ipv4Route by then).
+  update_neighbor(to_destination.next_hop, params_.active_route_timeout);
+  if (previous_hop != kNoNode) update_neighbor(previous_hop, params_.active_route_timeout);
+}
+
+void Aodv::report_no_route(const Packet& packet) {
+  // RFC 3561 6.11 case ii: a RERR to the source of a packet this node cannot forward.
+  const SimTime t = now();
   const RouteEntry* stale = table_.find(packet.destination, t);
   const std::uint32_t seq = stale != nullptr && stale->valid_seq ? stale->seq : 0;
-  context_->drop(packet, DropReason::no_route);
   // ns-3.37 (SendRerrWhenNoRouteToForward) checks the limit but does not count this RERR.
   const bool room = params_.rerr_to_valid_precursors
                         ? rerr_rate_has_room()
@@ -488,6 +539,10 @@ void Aodv::update_route_to_neighbor(NodeId neighbor) {
     table_.insert(std::move(entry));
     return;
   }
+  if (params_.neighbor_route_forgets_seqno) {
+    forget_neighbor_seqno(*route, neighbor);
+    return;
+  }
   if (route->is_valid() && route->hop_count == 1 && route->next_hop == neighbor) {
     route->expires = std::max(route->expires, t + params_.active_route_timeout);
     return;
@@ -502,6 +557,38 @@ void Aodv::update_route_to_neighbor(NodeId neighbor) {
   route->rreq_count = 0;
   route->expires = std::max(route->expires, t + params_.active_route_timeout);
   release_buffer_early(neighbor);
+}
+
+void Aodv::forget_neighbor_seqno(RouteEntry& route, NodeId neighbor) {
+  // ns-3.37 (UpdateRouteToNeighbor) changes only a copy of a one-hop route with a valid number,
+  // so such a route is left as it is: its lifetime too, and an invalid one stays invalid.
+  if (route.valid_seq && route.hop_count == 1) return;
+  // Any other route is replaced by a new one-hop entry: number 0, unknown, no precursors.
+  end_search_early(route);
+  route.seq = 0;
+  route.valid_seq = false;
+  route.state = RouteState::valid;
+  route.next_hop = neighbor;
+  route.hop_count = 1;
+  route.rreq_count = 0;
+  route.precursors.clear();
+  route.expires = std::max(route.expires, now() + params_.active_route_timeout);
+  release_buffer_early(neighbor);
+}
+
+void Aodv::overwrite_reverse_route(RouteEntry& to_origin, const Rreq& rreq, NodeId from,
+                                   std::uint32_t hops, SimTime lifetime) {
+  // ns-3.37 (RecvRequest): the number only grows, but the next hop and the hop count are the
+  // RREQ's whatever they replace, and the state is left alone (an invalid route stays invalid,
+  // one in search stays in search).
+  if (!to_origin.valid_seq || seq_newer(rreq.originator_seq, to_origin.seq)) {
+    to_origin.seq = rreq.originator_seq;
+  }
+  to_origin.valid_seq = true;
+  to_origin.next_hop = from;
+  to_origin.hop_count = hops;
+  if (to_origin.state != RouteState::in_search) to_origin.rreq_count = 0;
+  to_origin.expires = std::max(to_origin.expires, now() + lifetime);
 }
 
 void Aodv::receive_request(const Rreq& received, NodeId from) {
@@ -528,6 +615,8 @@ void Aodv::receive_request(const Rreq& received, NodeId from) {
     entry.valid_seq = true;
     entry.expires = t + reverse_lifetime;
     to_origin = &table_.insert(std::move(entry));
+  } else if (params_.rreq_overwrites_reverse_route) {
+    overwrite_reverse_route(*to_origin, rreq, from, hops, reverse_lifetime);
   } else if (fresher(*to_origin, rreq.originator_seq, hops)) {
     end_search_early(*to_origin);
     to_origin->seq = rreq.originator_seq;
@@ -560,7 +649,9 @@ void Aodv::receive_request(const Rreq& received, NodeId from) {
   // found at this instant), though it may invalidate it.
   update_neighbor(from, params_.hello_lifetime());
   if (to_origin->is_valid()) release_buffer_early(rreq.originator);
-  const bool reverse_usable = to_origin->is_valid();
+  // ns-3.37 answers over the reverse route whatever its state: the reply goes to the neighbour
+  // the RREQ came from.
+  const bool reverse_usable = params_.rreq_overwrites_reverse_route || to_origin->is_valid();
 
   if (rreq.destination == self_) {
     if (reverse_usable) reply_as_destination(rreq, *to_origin);
@@ -706,8 +797,13 @@ void Aodv::receive_ack(NodeId from) {
 // ---- control messages out ---------------------------------------------------------------------
 
 void Aodv::reply_as_destination(const Rreq& rreq, const RouteEntry& to_origin) {
-  // RFC 3561 6.6.1: at least the sequence number the originator asked for.
-  if (!rreq.unknown_seq && seq_newer(rreq.destination_seq, seq_)) seq_ = rreq.destination_seq;
+  if (params_.reply_seqno_plus_one_only) {
+    // ns-3.37 (SendReply): one more only when exactly one more is asked for.
+    if (!rreq.unknown_seq && rreq.destination_seq == seq_ + 1) ++seq_;
+  } else if (!rreq.unknown_seq && seq_newer(rreq.destination_seq, seq_)) {
+    // RFC 3561 6.6.1: at least the sequence number the originator asked for.
+    seq_ = rreq.destination_seq;
+  }
   Rrep rrep;
   rrep.destination = self_;
   rrep.destination_seq = seq_;
@@ -834,10 +930,12 @@ void Aodv::transmit_control(Packet packet, const RouteEntry& route) {
   if (const std::optional<Message> message = decode(packet.header)) {
     context_->count(counter_name(*message));
   }
-  // The message is for the neighbour itself: it goes to it directly even when its route now
-  // leads through another node (ns-3 would relay the datagram; it is rare).
-  const NodeId neighbor = packet.destination;
-  context_->send_to_mac(std::move(packet), neighbor);
+  // The message is for the neighbour itself. By default it goes to it directly even when its
+  // route now leads through another node; with control_via_route_to_neighbor (ns-3.37's IP) it
+  // takes that route, and the node there relays it (relay_control).
+  const NodeId next_hop =
+      params_.control_via_route_to_neighbor ? route.next_hop : packet.destination;
+  context_->send_to_mac(std::move(packet), next_hop);
 }
 
 void Aodv::broadcast_control(const Message& message) {

@@ -50,6 +50,10 @@ class Aodv final : public Routing {
 
   // Data.
   void forward_data(Packet packet);
+  // What forwarding a packet along a valid route refreshes (RFC 3561 6.2, ns-3.37 Forwarding).
+  void keep_forwarding_routes_alive(const Packet& packet, const RouteEntry& to_destination);
+  // The RERR a node sends to the source of a packet it has no route to forward.
+  void report_no_route(const Packet& packet);
   void deliver_broadcast(Packet packet);
   void transmit_data(Packet packet, const RouteEntry& route);
   void buffer(Packet packet);
@@ -85,6 +89,13 @@ class Aodv final : public Routing {
   void receive_error(const Rerr& rerr, NodeId from);
   void receive_ack(NodeId from);
   void update_route_to_neighbor(NodeId neighbor);
+  // A unicast control message for another node, relayed as IP (control_via_route_to_neighbor).
+  void relay_control(Packet packet, Message message);
+  // ns-3.37's readings of two route updates (neighbor_route_forgets_seqno,
+  // rreq_overwrites_reverse_route); RFC 3561's are in the callers.
+  void forget_neighbor_seqno(RouteEntry& route, NodeId neighbor);
+  void overwrite_reverse_route(RouteEntry& to_origin, const Rreq& rreq, NodeId from,
+                               std::uint32_t hops, SimTime lifetime);
 
   // Control messages out.
   void reply_as_destination(const Rreq& rreq, const RouteEntry& to_origin);

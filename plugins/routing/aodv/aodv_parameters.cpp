@@ -133,6 +133,36 @@ std::vector<ParamSpec> parameter_schema() {
                  "that makes the route valid neither ends the discovery nor sends the buffer, so "
                  "new packets take the route at once and overtake them; false: any route that "
                  "becomes valid ends its discovery and sends its buffer"),
+      bool_param("rreq_overwrites_reverse_route", false,
+                 "true: ns-3.37's rule (RecvRequest): a new RREQ makes the node it came from the "
+                 "next hop to its originator with the RREQ's hop count, whatever the freshness "
+                 "of the route it replaces, and leaves the route's state as it was (an invalid "
+                 "route stays invalid); the node answers as destination or intermediate even "
+                 "over such a route, through the neighbour the RREQ came from; false: the "
+                 "reverse route is updated only by a fresher RREQ (RFC 3561 6.2), which makes it "
+                 "valid, and a node answers only over a valid reverse route"),
+      bool_param("neighbor_route_forgets_seqno", false,
+                 "true: ns-3.37's rule (UpdateRouteToNeighbor): an AODV message from a neighbour "
+                 "whose route is not a one-hop route with a valid sequence number makes it a "
+                 "valid one-hop route with sequence number 0, marked unknown, and no precursors "
+                 "(any later RREP for the neighbour may then replace it); a one-hop route with a "
+                 "valid number is left as it is, an invalid one included; false: the route keeps "
+                 "its number, its validity and its precursors and becomes valid, which keeps "
+                 "routes loop free"),
+      bool_param("reply_seqno_plus_one_only", false,
+                 "true: ns-3.37's rule (SendReply): a destination answering a RREQ increments "
+                 "its sequence number only if the RREQ asks for exactly its number plus one, "
+                 "and otherwise answers with its own number; false: it answers with the larger "
+                 "of its own number and the one asked for (RFC 3561 6.6.1)"),
+      bool_param("control_via_route_to_neighbor", false,
+                 "true: ns-3.37's IP (SendTo, RouteOutput, Forwarding, IpForward): a unicast AODV "
+                 "message (RREP, RERR, RREP-ACK) to a neighbour goes as an IP datagram along the "
+                 "route to that neighbour, so where the route leads through another node that "
+                 "node relays it, or drops it when its IP TTL runs out (a RERR's and a "
+                 "RREP-ACK's is 1, a RREP's its hop count with rrep_ip_ttl) or it has no route "
+                 "(with a RERR to the sender); the neighbour takes the message as coming from its "
+                 "sender, whom it then holds for a neighbour; false: the message goes straight "
+                 "to the neighbour"),
       bool_param("enable_broadcast", true,
                  "rebroadcast application broadcasts (with duplicate detection and data_ttl)"),
       bool_param("enable_local_repair", false,
@@ -190,6 +220,10 @@ AodvParameters parameters_from(const ParamSet& params) {
   p.rrep_ip_ttl = params.boolean("rrep_ip_ttl");
   p.rerr_to_valid_precursors = params.boolean("rerr_to_valid_precursors");
   p.queue_released_by_rrep_only = params.boolean("queue_released_by_rrep_only");
+  p.rreq_overwrites_reverse_route = params.boolean("rreq_overwrites_reverse_route");
+  p.neighbor_route_forgets_seqno = params.boolean("neighbor_route_forgets_seqno");
+  p.reply_seqno_plus_one_only = params.boolean("reply_seqno_plus_one_only");
+  p.control_via_route_to_neighbor = params.boolean("control_via_route_to_neighbor");
   p.enable_broadcast = params.boolean("enable_broadcast");
   p.enable_local_repair = params.boolean("enable_local_repair");
   p.local_add_ttl = count_param(params, "local_add_ttl");

@@ -44,6 +44,11 @@ struct AodvParameters {
   bool rrep_ip_ttl = false;
   bool rerr_to_valid_precursors = false;
   bool queue_released_by_rrep_only = false;
+  // ns-3.37's route-update rules, where RFC 3561's reading keeps routes loop free.
+  bool rreq_overwrites_reverse_route = false;
+  bool neighbor_route_forgets_seqno = false;
+  bool reply_seqno_plus_one_only = false;
+  bool control_via_route_to_neighbor = false;
   bool enable_broadcast = true;
   bool enable_local_repair = false;
   std::uint32_t local_add_ttl = 2;

@@ -1,6 +1,6 @@
-// ns-3.37's four control-message rules (aodv-routing-protocol.cc), each a parameter of the plugin
-// and each against SwarmNet's default reading of RFC 3561, on the SDK test kit (one node, node 0
-// of 10, with a fake routing context):
+// ns-3.37's protocol rules (aodv-routing-protocol.cc) where SwarmNet's default reads RFC 3561
+// otherwise, each a parameter of the plugin and each tested both ways, on the SDK test kit (one
+// node, node 0 of 10, with a fake routing context). Four control-message rules:
 //   rrep_over_invalid_reverse_route  RecvReply forwards a RREP over any route to its originator
 //                                    that is not in search, an invalid one included;
 //   rrep_ip_ttl                      a RREP's IP TTL is its sender's hop count to the originator,
@@ -9,12 +9,24 @@
 //                                    after 0-10 ms of jitter, and counts only unicast RERRs;
 //   queue_released_by_rrep_only      buffered packets leave only on a RREP for this node or when
 //                                    the discovery timer fires.
+// Three route-update rules:
+//   rreq_overwrites_reverse_route    RecvRequest makes the RREQ's sender the next hop to its
+//                                    originator whatever the route's freshness, state unchanged;
+//   neighbor_route_forgets_seqno     UpdateRouteToNeighbor replaces a neighbour's route that is
+//                                    not one hop with a valid number by one with number 0, unknown;
+//   reply_seqno_plus_one_only        SendReply increments the number only if the RREQ asks for
+//                                    exactly one more.
+// And ns-3's IP under AODV's unicast messages:
+//   control_via_route_to_neighbor    a RREP, RERR or RREP-ACK to a neighbour takes the route to
+//                                    it; a node on the way relays it as IP (TTL, no route), and
+//                                    the neighbour takes the IP source for the sender.
 // Why they matter: docs/validation.md, "The saturated rows, and ns-3's control-message rules".
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -134,15 +146,28 @@ class AodvNs3ControlRules : public AodvOneNode {
   }
 };
 
+// A rule's suite, run with ns-3.37's reading (the parameter true) and RFC 3561's (false).
+class BothReadings : public AodvNs3ControlRules, public ::testing::WithParamInterface<bool> {
+ protected:
+  // The node with `rule` at the reading under test, and `also` as given.
+  void make_with(const std::string& rule, ParamOverrides also = {}) {
+    also[rule] = GetParam();
+    make(also);
+  }
+};
+
+std::string reading_name(const ::testing::TestParamInfo<bool>& info) {
+  return info.param ? "ns3" : "rfc";
+}
+
 // ---- rrep_over_invalid_reverse_route -------------------------------------------------------
 
 // The reverse route to 7 (through neighbour 5) has expired; HELLOs keep the route to 5 itself
 // valid. A RREP for 7 then arrives from 6.
-class RrepOverInvalidReverseRoute : public AodvNs3ControlRules,
-                                    public ::testing::WithParamInterface<bool> {
+class RrepOverInvalidReverseRoute : public BothReadings {
  protected:
   void expire_reverse_route() {
-    make(ParamOverrides{{"rrep_over_invalid_reverse_route", GetParam()}});
+    make_with("rrep_over_invalid_reverse_route");
     rreq(5, 7, 8, 1);  // reverse route to 7 via 5, 2 hops, for 5.44 s
     for (int second = 1; second <= 6; ++second) {
       run(1.0);
@@ -178,8 +203,7 @@ TEST_P(RrepOverInvalidReverseRoute, NeverTravelsOverARouteInSearch) {
   EXPECT_TRUE(replies().empty());
 }
 
-INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RrepOverInvalidReverseRoute, ::testing::Bool(),
-                         [](const auto& info) { return info.param ? "ns3" : "rfc"; });
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RrepOverInvalidReverseRoute, ::testing::Bool(), reading_name);
 
 // ---- rrep_ip_ttl --------------------------------------------------------------------------
 
@@ -230,11 +254,10 @@ TEST_F(AodvNs3ControlRules, ByDefaultARrepHasNoTtlAndTravelsToItsOriginator) {
 // ---- rerr_to_valid_precursors -------------------------------------------------------------
 
 // This node relays 7's flow to 8: route to 8 via 6 with precursor 5. The link to 6 breaks.
-class RerrToValidPrecursors : public AodvNs3ControlRules,
-                              public ::testing::WithParamInterface<bool> {
+class RerrToValidPrecursors : public BothReadings {
  protected:
   void relay_then_break(bool precursor_route_valid) {
-    make(ParamOverrides{{"rerr_to_valid_precursors", GetParam()}});
+    make_with("rerr_to_valid_precursors");
     rreq(5, 7, 8, 1);
     rrep(6, 8, 7, 1);
     ASSERT_TRUE(route(8)->has_precursor(5));
@@ -278,7 +301,7 @@ TEST_P(RerrToValidPrecursors, APrecursorWithoutAValidRouteGetsNoneOrIsSearchedFo
 }
 
 TEST_P(RerrToValidPrecursors, OnlyUnicastRerrsCountTowardTheRateLimit) {
-  make(ParamOverrides{{"rerr_to_valid_precursors", GetParam()}});
+  make_with("rerr_to_valid_precursors");
   // Data of 7 for 9 reaches this node, which has no route to 9 and none back to 7: each packet
   // is dropped and answered by a broadcast RERR, 12 of them within one second.
   for (std::uint64_t uid = 1; uid <= 12; ++uid) data_from(5, 7, 9, 100 + uid);
@@ -287,15 +310,13 @@ TEST_P(RerrToValidPrecursors, OnlyUnicastRerrsCountTowardTheRateLimit) {
   EXPECT_EQ(errors_about(9).size(), GetParam() ? 12U : 10U);  // rerr_rate_limit 10
 }
 
-INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RerrToValidPrecursors, ::testing::Bool(),
-                         [](const auto& info) { return info.param ? "ns3" : "rfc"; });
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RerrToValidPrecursors, ::testing::Bool(), reading_name);
 
 // ---- queue_released_by_rrep_only ----------------------------------------------------------
 
-class QueueReleasedByRrepOnly : public AodvNs3ControlRules,
-                                public ::testing::WithParamInterface<bool> {
+class QueueReleasedByRrepOnly : public BothReadings {
  protected:
-  void make_rule() { make(ParamOverrides{{"queue_released_by_rrep_only", GetParam()}}); }
+  void make_rule() { make_with("queue_released_by_rrep_only"); }
 };
 
 TEST_P(QueueReleasedByRrepOnly, AHelloEndsTheDiscoveryOrNewPacketsOvertakeTheBuffer) {
@@ -340,8 +361,234 @@ TEST_P(QueueReleasedByRrepOnly, ARreqFromTheDestinationReleasesTheBufferOnlyByDe
   EXPECT_EQ(data_sent(), (std::vector<std::uint64_t>{1}));
 }
 
-INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, QueueReleasedByRrepOnly, ::testing::Bool(),
-                         [](const auto& info) { return info.param ? "ns3" : "rfc"; });
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, QueueReleasedByRrepOnly, ::testing::Bool(), reading_name);
+
+// ---- rreq_overwrites_reverse_route ----------------------------------------------------------
+
+class RreqOverwritesReverseRoute : public BothReadings {
+ protected:
+  void make_rule() { make_with("rreq_overwrites_reverse_route"); }
+};
+
+TEST_P(RreqOverwritesReverseRoute, ALongerPathWithTheSameNumberReplacesTheReverseRouteOrNot) {
+  make_rule();
+  rreq(5, 7, 8, 1);  // 7's RREQ (number 3) through 5: 2 hops
+  ASSERT_EQ(route(7)->next_hop, 5U);
+  rreq(6, 7, 9, 3, 2);  // 7's next RREQ, same number, through 6: 4 hops
+  const bool ns3 = GetParam();
+  EXPECT_EQ(route(7)->next_hop, ns3 ? 6U : 5U);
+  EXPECT_EQ(route(7)->hop_count, ns3 ? 4U : 2U);
+  EXPECT_TRUE(route(7)->is_valid());
+}
+
+TEST_P(RreqOverwritesReverseRoute, AnInvalidReverseRouteStaysInvalidAndIsAnsweredOverAnyway) {
+  // The expired route keeps its number (ns-3's rule, as the grid runs it), so that the RREQ's
+  // equal number is fresh enough for RFC 3561 too.
+  make_with("rreq_overwrites_reverse_route", {{"increment_seqno_on_break", false}});
+  rreq(5, 7, 8, 1);  // reverse route to 7 via 5, for 5.44 s
+  for (int second = 1; second <= 6; ++second) {
+    run(1.0);
+    hello_from(5, second);
+    hello_from(6, second);
+  }
+  run(0.5);  // past the housekeeping purge at 6 s
+  ASSERT_EQ(route(7)->state, RouteState::invalid);
+  rreq(6, 7, 0, 2, 2);  // 7's RREQ for this node, same number, through 6: 3 hops
+  const bool ns3 = GetParam();
+  // RFC 3561 6.2: an equal number makes an invalid route valid again; ns-3 changes only the
+  // next hop and the hop count, and answers over the route all the same.
+  EXPECT_EQ(route(7)->state, ns3 ? RouteState::invalid : RouteState::valid);
+  EXPECT_EQ(route(7)->next_hop, 6U);
+  EXPECT_EQ(route(7)->hop_count, 3U);
+  ASSERT_EQ(replies().size(), 1U);
+  EXPECT_EQ(replies().front().second, 6U);
+  EXPECT_EQ(replies().front().first.destination, 0U);
+}
+
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RreqOverwritesReverseRoute, ::testing::Bool(), reading_name);
+
+// ---- neighbor_route_forgets_seqno -----------------------------------------------------------
+
+class NeighborRouteForgetsSeqno : public BothReadings {
+ protected:
+  void make_rule() { make_with("neighbor_route_forgets_seqno"); }
+  // Any AODV message from `neighbor`: a RERR about a node this one has no route to.
+  void message_from(NodeId neighbor) {
+    Rerr rerr;
+    rerr.destinations.push_back({9, 1});
+    hear(rerr, neighbor);
+  }
+};
+
+TEST_P(NeighborRouteForgetsSeqno, AMultiHopRouteToTheSenderBecomesOneHopWithOrWithoutItsNumber) {
+  make_rule();
+  rreq(4, 7, 5, 1);  // 7 looks for 5 through 4
+  rrep(6, 5, 7, 1);  // 5 answers (number 7) through 6: route to 5 via 6, 2 hops, precursor 4
+  ASSERT_EQ(route(5)->hop_count, 2U);
+  ASSERT_TRUE(route(5)->has_precursor(4));
+  message_from(5);  // 5 is heard directly
+  const bool ns3 = GetParam();
+  EXPECT_TRUE(route(5)->is_valid());
+  EXPECT_EQ(route(5)->next_hop, 5U);
+  EXPECT_EQ(route(5)->hop_count, 1U);
+  EXPECT_EQ(route(5)->valid_seq, !ns3);
+  EXPECT_EQ(route(5)->seq, ns3 ? 0U : 7U);
+  EXPECT_EQ(route(5)->has_precursor(4), !ns3);
+  // With the number forgotten any RREP for 5 replaces the direct route, a longer one included
+  // (how ns-3's routes can loop); with it kept, an equal number needs fewer hops.
+  rrep(6, 5, 0, 1);
+  EXPECT_EQ(route(5)->next_hop, ns3 ? 6U : 5U);
+  EXPECT_EQ(route(5)->hop_count, ns3 ? 2U : 1U);
+}
+
+TEST_P(NeighborRouteForgetsSeqno, AnInvalidOneHopRouteWithANumberStaysInvalid) {
+  make_rule();
+  hello_from(5, 4);  // a one-hop route to 5, number 4, for 2 s
+  run(3.5);          // expired by the housekeeping purge
+  ASSERT_EQ(route(5)->state, RouteState::invalid);
+  ASSERT_TRUE(route(5)->valid_seq);
+  const std::uint32_t seq = route(5)->seq;
+  const SimTime expires = route(5)->expires;
+  message_from(5);
+  const bool ns3 = GetParam();
+  // ns-3.37 updates a copy of such a route and drops it: the route stays as it was.
+  EXPECT_EQ(route(5)->state, ns3 ? RouteState::invalid : RouteState::valid);
+  EXPECT_EQ(route(5)->seq, seq);
+  EXPECT_TRUE(route(5)->valid_seq);
+  if (ns3) {
+    EXPECT_EQ(route(5)->expires, expires);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, NeighborRouteForgetsSeqno, ::testing::Bool(), reading_name);
+
+// ---- reply_seqno_plus_one_only --------------------------------------------------------------
+
+class ReplySeqnoPlusOneOnly : public BothReadings {
+ protected:
+  // 7's RREQ for this node through neighbour 5, asking for number `wanted`.
+  void asked_for(std::uint32_t wanted, std::uint32_t id) {
+    Rreq rreq;
+    rreq.originator = 7;
+    rreq.originator_seq = 3 + id;
+    rreq.id = id;
+    rreq.hop_count = 1;
+    rreq.destination = 0;
+    rreq.destination_seq = wanted;
+    rreq.ttl = 1;
+    hear(rreq, 5);
+  }
+};
+
+TEST_P(ReplySeqnoPlusOneOnly, ADestinationAnswersWithTheNumberAskedForOrOnlyOneMore) {
+  make_with("reply_seqno_plus_one_only");
+  const std::uint32_t own = aodv_->sequence_number();
+  asked_for(own + 1, 1);  // exactly one more: both readings increment
+  ASSERT_EQ(replies().size(), 1U);
+  EXPECT_EQ(replies().back().first.destination_seq, own + 1);
+  asked_for(own + 5, 2);  // four more than that
+  ASSERT_EQ(replies().size(), 2U);
+  const bool ns3 = GetParam();
+  EXPECT_EQ(replies().back().first.destination_seq, ns3 ? own + 1 : own + 5);
+  EXPECT_EQ(aodv_->sequence_number(), ns3 ? own + 1 : own + 5);
+}
+
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, ReplySeqnoPlusOneOnly, ::testing::Bool(), reading_name);
+
+// ---- control_via_route_to_neighbor ----------------------------------------------------------
+
+class ControlViaRouteToNeighbor : public BothReadings {
+ protected:
+  void make_rule() { make_with("control_via_route_to_neighbor", {{"rrep_ip_ttl", true}}); }
+  // A unicast AODV message that `source` sent to `destination`, handed over by link sender
+  // `from` after one link.
+  void unicast(const Message& message, NodeId source, NodeId destination, NodeId from) {
+    Packet packet = PacketBuilder().uid(next_uid_++).from(source).to(destination).hops(1).build();
+    encode(message, packet.header);
+    aodv_->receive(std::move(packet), from);
+  }
+  static Rrep rrep_about(NodeId destination, NodeId originator, std::uint8_t ttl) {
+    Rrep rrep;
+    rrep.destination = destination;
+    rrep.destination_seq = 7;
+    rrep.originator = originator;
+    rrep.hop_count = 1;
+    rrep.lifetime_ms = 10000;
+    rrep.ttl = ttl;
+    return rrep;
+  }
+};
+
+TEST_P(ControlViaRouteToNeighbor, ARerrToAPrecursorTakesTheRouteToItOrGoesStraightToIt) {
+  make_rule();
+  rreq(5, 7, 8, 1);  // 7 looks for 8 through neighbour 5
+  rrep(6, 8, 7, 1);  // 8 answers through 6: route to 8 via 6 with precursor 5
+  rrep(4, 5, 0, 2);  // a RREP about 5 through 4 replaces the direct route to 5: 3 hops
+  ASSERT_EQ(route(5)->next_hop, 4U);
+  hello_from(6);  // 6 is a neighbour, so its link can break
+  aodv_->link_failed(data_to(8, 901), 6);
+  const auto errors = errors_about(8);
+  ASSERT_EQ(errors.size(), 1U);
+  EXPECT_EQ(errors.front().next_hop, GetParam() ? 4U : 5U);
+  const auto it = std::find_if(node_.to_mac.begin(), node_.to_mac.end(), [](const auto& item) {
+    return item.packet.is_control() && decode(item.packet.header) &&
+           std::holds_alternative<Rerr>(*decode(item.packet.header));
+  });
+  ASSERT_NE(it, node_.to_mac.end());
+  EXPECT_EQ(it->packet.destination, 5U);  // for the precursor either way
+}
+
+TEST_P(ControlViaRouteToNeighbor, TheReceiverTakesTheIpSourceOrTheLinkSenderForTheSender) {
+  make_rule();
+  unicast(rrep_about(8, 0, 3), 7, 0, 4);  // 7's RREP about 8 for this node, relayed by 4
+  const NodeId sender = GetParam() ? 7U : 4U;
+  ASSERT_NE(route(8), nullptr);
+  EXPECT_EQ(route(8)->next_hop, sender);
+  ASSERT_NE(route(sender), nullptr);
+  EXPECT_EQ(route(sender)->hop_count, 1U);  // believed a neighbour
+  EXPECT_EQ(route(GetParam() ? 4U : 7U), nullptr);
+}
+
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, ControlViaRouteToNeighbor, ::testing::Bool(), reading_name);
+
+class ControlRelayedByIp : public ControlViaRouteToNeighbor {};
+
+TEST_P(ControlRelayedByIp, ARrepForAnotherNodeIsRelayedAlongItsRouteWithOneTtlLess) {
+  make_rule();
+  rrep(6, 5, 0, 1);                       // route to 5 via 6
+  unicast(rrep_about(8, 5, 3), 7, 5, 4);  // 7's RREP for neighbour 5, relayed here by 4
+  ASSERT_EQ(replies().size(), 1U);
+  EXPECT_EQ(replies().front().second, 6U);
+  EXPECT_EQ(replies().front().first.ttl, 2U);
+  EXPECT_EQ(replies().front().first.destination, 8U);
+  EXPECT_EQ(node_.to_mac.back().packet.source, 7U);
+  EXPECT_EQ(node_.to_mac.back().packet.destination, 5U);
+  EXPECT_EQ(node_.forwarded.size(), 1U);
+  EXPECT_EQ(node_.counter("control_rrep"), 1U);
+  EXPECT_EQ(route(8), nullptr);  // the relay does not read it
+  EXPECT_EQ(route(7), nullptr);
+}
+
+TEST_P(ControlRelayedByIp, ARerrDiesAtTheRelayAndAPacketWithoutARouteIsReported) {
+  make_rule();
+  rrep(6, 5, 0, 1);
+  Rerr rerr;
+  rerr.destinations.push_back({9, 1});
+  unicast(rerr, 7, 5, 4);  // a RERR's IP TTL is 1
+  ASSERT_EQ(node_.dropped.size(), 1U);
+  EXPECT_EQ(node_.dropped.back().reason, DropReason::ttl_expired);
+  EXPECT_TRUE(node_.to_mac.empty());
+  unicast(rrep_about(8, 3, 4), 7, 3, 4);  // for 3: no route
+  ASSERT_EQ(node_.dropped.size(), 2U);
+  EXPECT_EQ(node_.dropped.back().reason, DropReason::no_route);
+  run(0.011);
+  const auto errors = errors_about(3);  // broadcast: no route back to 7 either
+  ASSERT_EQ(errors.size(), 1U);
+  EXPECT_EQ(errors.front().next_hop, kBroadcast);
+}
+
+INSTANTIATE_TEST_SUITE_P(Ns3, ControlRelayedByIp, ::testing::Values(true),
+                         [](const auto&) { return "ns3"; });
 
 }  // namespace
 }  // namespace swarmnet::aodv
