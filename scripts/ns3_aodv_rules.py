@@ -8,8 +8,9 @@ route; a RREP's IP TTL; RERRs only to precursors with a valid route, after a jit
 packets sent only on a RREP or at the discovery timer), and three route-update rules (a RREQ
 overwrites the reverse route whatever its freshness; a message from a neighbour leaves its route
 with number 0, unknown; a destination increments its number only when asked for exactly one
-more), and ns-3's IP under its unicast messages (a RREP, RERR or RREP-ACK takes the route to its
-neighbour, and a node on the way relays it as IP). The ns-3 engine refuses AODV without them;
+more), and ns-3's IP under its messages (a RREP, RERR or RREP-ACK takes the route to its
+neighbour, and a node on the way relays it as IP; a message heard refreshes the route to its
+sender before AODV reads it). The ns-3 engine refuses AODV without them;
 the validation grid and the engine benchmark give them to SwarmNet's side so that both sides run
 the same protocol.
 """
@@ -25,6 +26,7 @@ NS3_AODV_RULES = {
     "neighbor_route_forgets_seqno": True,
     "reply_seqno_plus_one_only": True,
     "control_via_route_to_neighbor": True,
+    "ip_input_refreshes_routes": True,
 }
 
 

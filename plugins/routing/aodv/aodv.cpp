@@ -115,7 +115,9 @@ PluginInfo Aodv::info() {
       "its own and the RREQ's (6.6.1; reply_seqno_plus_one_only); link breaks increment the "
       "sequence numbers they report (6.11), and so do expiring routes "
       "(increment_seqno_on_break); a unicast message goes straight to its neighbour, where "
-      "ns-3's IP takes the route to it (control_via_route_to_neighbor). One more, "
+      "ns-3's IP takes the route to it (control_via_route_to_neighbor), and only AODV's own "
+      "rules refresh routes on a message heard, where ns-3's IP refreshes the sender's too "
+      "(ip_input_refreshes_routes). One more, "
       "SwarmNet's own, for loop freedom: a RREQ leaves the route to the neighbour it came from "
       "with its sequence number, where ns-3 (and RFC 3561 6.5) mark the number unknown until the "
       "neighbour's next HELLO or RREP, so that meanwhile no node answers a RREQ for that "
@@ -180,12 +182,7 @@ void Aodv::receive(Packet packet, NodeId from) {
     if (packet.destination == kBroadcast) {
       deliver_broadcast(std::move(packet));
     } else if (packet.destination == self_) {
-      table_.refresh(packet.source, params_.active_route_timeout, now());
-      if (const RouteEntry* to_origin = table_.find_valid(packet.source, now())) {
-        const NodeId previous_hop = to_origin->next_hop;
-        table_.refresh(previous_hop, params_.active_route_timeout, now());
-        update_neighbor(previous_hop, params_.active_route_timeout);
-      }
+      keep_source_routes_alive(packet);
       context_->deliver(packet);
     } else {
       forward_data(std::move(packet));
@@ -206,6 +203,15 @@ void Aodv::receive(Packet packet, NodeId from) {
   // node relayed it (control_via_route_to_neighbor), and then it takes the originator for a
   // neighbour all the same.
   const NodeId sender = params_.control_via_route_to_neighbor ? packet.source : from;
+  if (params_.ip_input_refreshes_routes) {
+    // ns-3.37 (RouteInput), before AODV reads the datagram: a broadcast refreshes the route to
+    // its sender, one for this node also the way back, as data for this node does.
+    if (packet.destination == kBroadcast) {
+      table_.refresh(packet.source, params_.active_route_timeout, now());
+    } else {
+      keep_source_routes_alive(packet);
+    }
+  }
   // ns-3.37 (RecvAodv) makes the sender a one-hop route on every AODV message it hears, before
   // looking at it: duplicate RREQs and copies of our own RREQs too. In a flood a node thus learns
   // a direct route to every neighbour that relays it, not only to the first (the neighbour table
@@ -252,6 +258,7 @@ void Aodv::relay_control(Packet packet, Message message) {
   // ns-3.37: the datagram is for another node, so IP forwards it (RouteInput, Forwarding) as it
   // would data, and IpForward takes one off its TTL and drops it at 0. A RREP's TTL rides in
   // its reserved bits (rrep_ip_ttl; without it, data_ttl's); RERRs and RREP-ACKs leave with 1.
+  if (packet.source == self_) return;  // our own datagram come back: IP discards it silently
   const RouteEntry* route = table_.find_valid(packet.destination, now());
   if (route == nullptr) {
     context_->drop(packet, DropReason::no_route);
@@ -260,21 +267,41 @@ void Aodv::relay_control(Packet packet, Message message) {
   }
   const RouteEntry to_destination = *route;
   keep_forwarding_routes_alive(packet, to_destination);
+  table_.refresh(to_destination.destination, params_.active_route_timeout, now());
+  table_.refresh(to_destination.next_hop, params_.active_route_timeout, now());
   auto* rrep = std::get_if<Rrep>(&message);
-  const std::uint32_t ttl =
-      rrep == nullptr ? 1U : (params_.rrep_ip_ttl ? std::uint32_t{rrep->ttl} : params_.data_ttl);
-  if (ttl <= 1) {
-    context_->drop(packet, DropReason::ttl_expired);
-    return;
-  }
   if (rrep != nullptr && params_.rrep_ip_ttl) {
-    rrep->ttl = static_cast<std::uint8_t>(ttl - 1);
+    // The TTL in the header is what this node received: one off, and nothing left at 0.
+    if (rrep->ttl <= 1) {
+      context_->drop(packet, DropReason::ttl_expired);
+      return;
+    }
+    rrep->ttl = static_cast<std::uint8_t>(rrep->ttl - 1);
     packet.header.clear();
     encode(*rrep, packet.header);
+  } else {
+    // A TTL of `sent_ttl` lasts for sent_ttl - 1 relays: `hops` links so far means hops - 1
+    // relays before this one.
+    const std::uint32_t sent_ttl = rrep != nullptr ? params_.data_ttl : 1U;
+    if (packet.hops >= sent_ttl) {
+      context_->drop(packet, DropReason::ttl_expired);
+      return;
+    }
   }
   context_->count(counter_name(message));
   context_->trace_forward(packet);
   context_->send_to_mac(std::move(packet), to_destination.next_hop);
+}
+
+void Aodv::keep_source_routes_alive(const Packet& packet) {
+  // ns-3.37 (RouteInput, unicast local delivery): the route to the source, the next hop back to
+  // it and that neighbour stay alive.
+  table_.refresh(packet.source, params_.active_route_timeout, now());
+  if (const RouteEntry* to_origin = table_.find_valid(packet.source, now())) {
+    const NodeId previous_hop = to_origin->next_hop;
+    table_.refresh(previous_hop, params_.active_route_timeout, now());
+    update_neighbor(previous_hop, params_.active_route_timeout);
+  }
 }
 
 void Aodv::keep_forwarding_routes_alive(const Packet& packet, const RouteEntry& to_destination) {

@@ -50,6 +50,8 @@ class Aodv final : public Routing {
 
   // Data.
   void forward_data(Packet packet);
+  // What a packet for this node refreshes: the route to its source and the way back.
+  void keep_source_routes_alive(const Packet& packet);
   // What forwarding a packet along a valid route refreshes (RFC 3561 6.2, ns-3.37 Forwarding).
   void keep_forwarding_routes_alive(const Packet& packet, const RouteEntry& to_destination);
   // The RERR a node sends to the source of a packet it has no route to forward.

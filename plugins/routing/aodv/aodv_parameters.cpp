@@ -146,9 +146,10 @@ std::vector<ParamSpec> parameter_schema() {
                  "whose route is not a one-hop route with a valid sequence number makes it a "
                  "valid one-hop route with sequence number 0, marked unknown, and no precursors "
                  "(any later RREP for the neighbour may then replace it); a one-hop route with a "
-                 "valid number is left as it is, an invalid one included; false: the route keeps "
-                 "its number, its validity and its precursors and becomes valid, which keeps "
-                 "routes loop free"),
+                 "valid number is left as it is, an invalid one included, and not refreshed "
+                 "(ip_input_refreshes_routes does that in ns-3); false: the route keeps its "
+                 "sequence number, marked known or not as before, and its precursors, becomes "
+                 "valid and is refreshed, which keeps routes loop free"),
       bool_param("reply_seqno_plus_one_only", false,
                  "true: ns-3.37's rule (SendReply): a destination answering a RREQ increments "
                  "its sequence number only if the RREQ asks for exactly its number plus one, "
@@ -159,10 +160,17 @@ std::vector<ParamSpec> parameter_schema() {
                  "message (RREP, RERR, RREP-ACK) to a neighbour goes as an IP datagram along the "
                  "route to that neighbour, so where the route leads through another node that "
                  "node relays it, or drops it when its IP TTL runs out (a RERR's and a "
-                 "RREP-ACK's is 1, a RREP's its hop count with rrep_ip_ttl) or it has no route "
+                 "RREP-ACK's is 1, a RREP's its hop count with rrep_ip_ttl, else data_ttl) or it "
+                 "has no route "
                  "(with a RERR to the sender); the neighbour takes the message as coming from its "
                  "sender, whom it then holds for a neighbour; false: the message goes straight "
                  "to the neighbour"),
+      bool_param("ip_input_refreshes_routes", false,
+                 "true: ns-3.37's IP (RouteInput) before AODV reads a message: a broadcast one "
+                 "refreshes the valid route to its sender for active_route_timeout_s, one "
+                 "addressed to this node also the valid route to the next hop back toward its "
+                 "sender and that neighbour's entry, as data for this node does; false: only "
+                 "AODV's own rules refresh routes when a message is heard"),
       bool_param("enable_broadcast", true,
                  "rebroadcast application broadcasts (with duplicate detection and data_ttl)"),
       bool_param("enable_local_repair", false,
@@ -224,6 +232,7 @@ AodvParameters parameters_from(const ParamSet& params) {
   p.neighbor_route_forgets_seqno = params.boolean("neighbor_route_forgets_seqno");
   p.reply_seqno_plus_one_only = params.boolean("reply_seqno_plus_one_only");
   p.control_via_route_to_neighbor = params.boolean("control_via_route_to_neighbor");
+  p.ip_input_refreshes_routes = params.boolean("ip_input_refreshes_routes");
   p.enable_broadcast = params.boolean("enable_broadcast");
   p.enable_local_repair = params.boolean("enable_local_repair");
   p.local_add_ttl = count_param(params, "local_add_ttl");

@@ -49,6 +49,7 @@ struct AodvParameters {
   bool neighbor_route_forgets_seqno = false;
   bool reply_seqno_plus_one_only = false;
   bool control_via_route_to_neighbor = false;
+  bool ip_input_refreshes_routes = false;
   bool enable_broadcast = true;
   bool enable_local_repair = false;
   std::uint32_t local_add_ttl = 2;

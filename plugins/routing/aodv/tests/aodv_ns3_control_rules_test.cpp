@@ -19,7 +19,9 @@
 // And ns-3's IP under AODV's unicast messages:
 //   control_via_route_to_neighbor    a RREP, RERR or RREP-ACK to a neighbour takes the route to
 //                                    it; a node on the way relays it as IP (TTL, no route), and
-//                                    the neighbour takes the IP source for the sender.
+//                                    the neighbour takes the IP source for the sender;
+//   ip_input_refreshes_routes        IP refreshes the route to a message's sender (and for one
+//                                    addressed to this node the way back) before AODV reads it.
 // Why they matter: docs/validation.md, "The saturated rows, and ns-3's control-message rules".
 #include <gtest/gtest.h>
 
@@ -502,8 +504,10 @@ class ControlViaRouteToNeighbor : public BothReadings {
   void make_rule() { make_with("control_via_route_to_neighbor", {{"rrep_ip_ttl", true}}); }
   // A unicast AODV message that `source` sent to `destination`, handed over by link sender
   // `from` after one link.
-  void unicast(const Message& message, NodeId source, NodeId destination, NodeId from) {
-    Packet packet = PacketBuilder().uid(next_uid_++).from(source).to(destination).hops(1).build();
+  void unicast(const Message& message, NodeId source, NodeId destination, NodeId from,
+               std::uint32_t hops = 1) {
+    Packet packet =
+        PacketBuilder().uid(next_uid_++).from(source).to(destination).hops(hops).build();
     encode(message, packet.header);
     aodv_->receive(std::move(packet), from);
   }
@@ -569,6 +573,36 @@ TEST_P(ControlRelayedByIp, ARrepForAnotherNodeIsRelayedAlongItsRouteWithOneTtlLe
   EXPECT_EQ(route(7), nullptr);
 }
 
+TEST_P(ControlRelayedByIp, TheRelayKeepsTheRouteItUsesAlive) {
+  make_rule();
+  rrep(6, 5, 0, 1);  // route to 5 via 6, for 10 s (the RREP's lifetime)
+  run(8.0);
+  hello_from(6, 8);
+  unicast(rrep_about(8, 5, 3), 7, 5, 4);
+  ASSERT_EQ(replies().size(), 1U);
+  EXPECT_EQ(route(5)->expires, scheduler_.now() + from_seconds(3.0));  // past its 10 s
+  EXPECT_GE(route(6)->expires, scheduler_.now() + from_seconds(3.0));
+}
+
+TEST_P(ControlRelayedByIp, OurOwnDatagramComingBackIsDiscardedSilently) {
+  make_rule();
+  rrep(6, 5, 0, 1);
+  unicast(rrep_about(8, 5, 3), 0, 5, 4);  // this node's own RREP for 5, handed back by 4
+  EXPECT_TRUE(node_.to_mac.empty());
+  EXPECT_TRUE(node_.dropped.empty());
+}
+
+TEST_P(ControlRelayedByIp, WithoutRrepIpTtlARrepLivesForDataTtlLinks) {
+  make(ParamOverrides{{"control_via_route_to_neighbor", true}, {"data_ttl", 3}});
+  rrep(6, 5, 0, 1);
+  unicast(rrep_about(8, 5, 0), 7, 5, 4, 2);  // two links so far: one relay left
+  EXPECT_EQ(replies().size(), 1U);
+  unicast(rrep_about(8, 5, 0), 7, 5, 4, 3);  // three: its TTL of 3 is used up here
+  EXPECT_EQ(replies().size(), 1U);
+  ASSERT_EQ(node_.dropped.size(), 1U);
+  EXPECT_EQ(node_.dropped.back().reason, DropReason::ttl_expired);
+}
+
 TEST_P(ControlRelayedByIp, ARerrDiesAtTheRelayAndAPacketWithoutARouteIsReported) {
   make_rule();
   rrep(6, 5, 0, 1);
@@ -589,6 +623,47 @@ TEST_P(ControlRelayedByIp, ARerrDiesAtTheRelayAndAPacketWithoutARouteIsReported)
 
 INSTANTIATE_TEST_SUITE_P(Ns3, ControlRelayedByIp, ::testing::Values(true),
                          [](const auto&) { return "ns3"; });
+
+// ---- ip_input_refreshes_routes ---------------------------------------------------------------
+
+// A neighbour's route that AODV itself leaves alone (neighbor_route_forgets_seqno, as ns-3.37's
+// UpdateRouteToNeighbor does) lives on only if IP refreshes it.
+class IpInputRefreshesRoutes : public BothReadings {
+ protected:
+  void make_rule() {
+    make_with("ip_input_refreshes_routes",
+              {{"neighbor_route_forgets_seqno", true}, {"control_via_route_to_neighbor", true}});
+  }
+  void rerr_from(NodeId source, NodeId destination, NodeId from) {
+    Rerr rerr;
+    rerr.destinations.push_back({9, 1});
+    Packet packet = PacketBuilder().uid(next_uid_++).from(source).to(destination).hops(1).build();
+    encode(Message{rerr}, packet.header);
+    aodv_->receive(std::move(packet), from);
+  }
+};
+
+TEST_P(IpInputRefreshesRoutes, ABroadcastRefreshesTheRouteToItsSenderOrNot) {
+  make_rule();
+  hello_from(5, 4);  // a one-hop route to 5 with a number, for 2 s
+  const SimTime expires = route(5)->expires;
+  run(1.5);
+  rerr_from(5, kBroadcast, 5);
+  EXPECT_EQ(route(5)->expires, GetParam() ? scheduler_.now() + from_seconds(3.0) : expires);
+}
+
+TEST_P(IpInputRefreshesRoutes, AMessageForThisNodeRefreshesTheWayBackOrNot) {
+  make_rule();
+  rreq(5, 7, 8, 1);  // reverse route to 7 via 5; the route to 5: one hop, 3 s
+  hello_from(5, 4);
+  run(1.5);
+  const SimTime to_neighbor = route(5)->expires;
+  rerr_from(7, 0, 5);  // 7's RERR for this node, relayed by 5
+  EXPECT_EQ(route(5)->expires,
+            GetParam() ? std::max(to_neighbor, scheduler_.now() + from_seconds(3.0)) : to_neighbor);
+}
+
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, IpInputRefreshesRoutes, ::testing::Bool(), reading_name);
 
 }  // namespace
 }  // namespace swarmnet::aodv
