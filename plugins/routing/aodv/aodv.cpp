@@ -267,8 +267,6 @@ void Aodv::relay_control(Packet packet, Message message) {
   }
   const RouteEntry to_destination = *route;
   keep_forwarding_routes_alive(packet, to_destination);
-  table_.refresh(to_destination.destination, params_.active_route_timeout, now());
-  table_.refresh(to_destination.next_hop, params_.active_route_timeout, now());
   auto* rrep = std::get_if<Rrep>(&message);
   if (rrep != nullptr && params_.rrep_ip_ttl) {
     // The TTL in the header is what this node received: one off, and nothing left at 0.
@@ -288,9 +286,8 @@ void Aodv::relay_control(Packet packet, Message message) {
       return;
     }
   }
-  context_->count(counter_name(message));
   context_->trace_forward(packet);
-  context_->send_to_mac(std::move(packet), to_destination.next_hop);
+  transmit_control(std::move(packet), to_destination);
 }
 
 void Aodv::keep_source_routes_alive(const Packet& packet) {
@@ -306,7 +303,10 @@ void Aodv::keep_source_routes_alive(const Packet& packet) {
 
 void Aodv::keep_forwarding_routes_alive(const Packet& packet, const RouteEntry& to_destination) {
   const SimTime t = now();
-  // RFC 3561 6.2: using a route keeps it, its next hop, the source and the previous hop alive.
+  // RFC 3561 6.2: using a route keeps it, its next hop, the source and the previous hop alive,
+  // even when IP then drops the packet (ns-3.37 Forwarding, before IpForward's TTL check).
+  table_.refresh(to_destination.destination, params_.active_route_timeout, t);
+  table_.refresh(to_destination.next_hop, params_.active_route_timeout, t);
   table_.refresh(packet.source, params_.active_route_timeout, t);
   const RouteEntry* to_origin = table_.find(packet.source, t);
   const NodeId previous_hop = to_origin != nullptr ? to_origin->next_hop : kNoNode;
