@@ -114,7 +114,9 @@ PluginInfo Aodv::info() {
       "neighbor_route_forgets_seqno); a destination sets its sequence number to the maximum of "
       "its own and the RREQ's (6.6.1; reply_seqno_plus_one_only); link breaks increment the "
       "sequence numbers they report (6.11), and so do expiring routes "
-      "(increment_seqno_on_break); a unicast message goes straight to its neighbour, where "
+      "(increment_seqno_on_break); a broken link or a RERR reports only valid routes (6.11), "
+      "where ns-3 reports routes in any state (rerr_covers_routes_in_any_state); a unicast message "
+      "goes straight to its neighbour, where "
       "ns-3's IP takes the route to it (control_via_route_to_neighbor), and only AODV's own "
       "rules refresh routes on a message heard, where ns-3's IP refreshes the sender's too "
       "(ip_input_refreshes_routes). One more, "
@@ -796,22 +798,48 @@ void Aodv::receive_hello(const Rrep& hello) {
 
 void Aodv::receive_error(const Rerr& rerr, NodeId from) {
   if (rerr.no_delete) return;  // a repair is under way upstream; routes stay
+  if (params_.rerr_covers_routes_in_any_state) {
+    relay_error_any_state(rerr, from);
+    return;
+  }
   const SimTime t = now();
   Rerr relay;
   std::vector<NodeId> precursors;
   for (const UnreachableDestination& d : rerr.destinations) {
     RouteEntry* route = table_.find_valid(d.destination, t);
     if (route == nullptr || route->next_hop != from) continue;
-    // ns-3.37 (RecvError) ignores the numbers a RERR carries.
-    if (params_.increment_seqno_on_break && (seq_newer(d.seq, route->seq) || !route->valid_seq)) {
-      route->seq = d.seq;
-      route->valid_seq = true;
-    }
+    adopt_reported_seqno(*route, d.seq);
     table_.invalidate(*route, t);
     merge(precursors, route->precursors);
     relay.destinations.push_back({d.destination, route->seq});
   }
   if (!relay.destinations.empty()) send_error(relay, precursors);
+}
+
+// ns-3.37's RecvError: every listed destination whose route, in any state, leads through the
+// RERR's sender is reported on, with the number the RERR gave it, to that route's precursors;
+// the RERR leaves before the valid ones among those routes are invalidated.
+void Aodv::relay_error_any_state(const Rerr& rerr, NodeId from) {
+  const SimTime t = now();
+  Rerr relay;
+  std::vector<NodeId> precursors;
+  for (const UnreachableDestination& d : rerr.destinations) {
+    RouteEntry* route = table_.find(d.destination, t);
+    if (route == nullptr || route->next_hop != from) continue;
+    if (route->is_valid()) adopt_reported_seqno(*route, d.seq);
+    merge(precursors, route->precursors);
+    relay.destinations.push_back(d);
+  }
+  if (relay.destinations.empty()) return;
+  send_error(relay, precursors);
+  invalidate_listed(relay);
+}
+
+void Aodv::invalidate_listed(const Rerr& rerr) {
+  const SimTime t = now();
+  for (const UnreachableDestination& d : rerr.destinations) {
+    if (RouteEntry* route = table_.find_valid(d.destination, t)) table_.invalidate(*route, t);
+  }
 }
 
 void Aodv::receive_ack(NodeId from) {
@@ -1012,6 +1040,10 @@ void Aodv::purge_neighbors(const Packet* failed, NodeId failed_hop) {
 }
 
 void Aodv::link_broken(NodeId neighbor, const Packet* failed) {
+  if (params_.rerr_covers_routes_in_any_state) {
+    report_routes_via(neighbor, failed);
+    return;
+  }
   const SimTime t = now();
   std::vector<UnreachableDestination> unreachable = table_.valid_destinations_via(neighbor, t);
   if (unreachable.empty()) return;
@@ -1021,21 +1053,71 @@ void Aodv::link_broken(NodeId neighbor, const Packet* failed) {
   for (const UnreachableDestination& d : unreachable) {
     RouteEntry* route = table_.find_valid(d.destination, t);
     if (route == nullptr) continue;
-    // Only a data packet is repaired: never a control or an ARP packet.
-    if (failed != nullptr && !failed->is_control() && !failed->is_arp() &&
-        failed->destination == d.destination && start_local_repair(*failed, *route)) {
-      buffer(*failed);
-      continue;
-    }
-    if (params_.increment_seqno_on_break) {  // RFC 3561 6.11; ns-3.37 keeps the number
-      route->seq += 1;
-      route->valid_seq = true;
-    }
+    if (repaired_locally(failed, *route)) continue;
+    increment_broken_seqno(*route);
     table_.invalidate(*route, t);
     merge(precursors, route->precursors);
     rerr.destinations.push_back({d.destination, route->seq});
   }
   if (!rerr.destinations.empty()) send_error(rerr, precursors);
+}
+
+// ns-3.37's SendRerrWhenBreaksLinkToNextHop: nothing without a route to the neighbour; else the
+// RERR lists the neighbour, whatever its route's next hop, and every route through it in any
+// state, and goes to all their precursors before the valid ones are invalidated. A valid route
+// that a local repair takes over is left out, as in link_broken.
+void Aodv::report_routes_via(NodeId neighbor, const Packet* failed) {
+  const SimTime t = now();
+  const RouteEntry* to_neighbor = table_.find(neighbor, t);
+  if (to_neighbor == nullptr) return;
+  std::vector<UnreachableDestination> listed = table_.destinations_via(neighbor, t);
+  const auto at = std::lower_bound(
+      listed.begin(), listed.end(), neighbor,
+      [](const UnreachableDestination& d, NodeId node) { return d.destination < node; });
+  if (at == listed.end() || at->destination != neighbor) {
+    listed.insert(at, {neighbor, to_neighbor->seq});
+  }
+  context_->count("link_breaks");
+  Rerr rerr;
+  std::vector<NodeId> precursors;
+  for (const UnreachableDestination& d : listed) {
+    RouteEntry* route = table_.find(d.destination, t);
+    if (route == nullptr) continue;
+    if (route->is_valid()) {
+      if (repaired_locally(failed, *route)) continue;
+      increment_broken_seqno(*route);
+    }
+    merge(precursors, route->precursors);
+    rerr.destinations.push_back({d.destination, route->seq});
+  }
+  if (rerr.destinations.empty()) return;
+  send_error(rerr, precursors);
+  invalidate_listed(rerr);
+}
+
+bool Aodv::repaired_locally(const Packet* failed, RouteEntry& route) {
+  // Only a data packet is repaired: never a control or an ARP packet.
+  if (failed == nullptr || failed->is_control() || failed->is_arp() ||
+      failed->destination != route.destination || !start_local_repair(*failed, route)) {
+    return false;
+  }
+  buffer(*failed);
+  return true;
+}
+
+void Aodv::increment_broken_seqno(RouteEntry& route) const {
+  if (!params_.increment_seqno_on_break) return;  // RFC 3561 6.11; ns-3.37 keeps the number
+  route.seq += 1;
+  route.valid_seq = true;
+}
+
+void Aodv::adopt_reported_seqno(RouteEntry& route, std::uint32_t seq) const {
+  // ns-3.37 (RecvError) ignores the numbers a RERR carries.
+  if (!params_.increment_seqno_on_break) return;
+  if (seq_newer(seq, route.seq) || !route.valid_seq) {
+    route.seq = seq;
+    route.valid_seq = true;
+  }
 }
 
 // Forgets expired routes, blacklist entries and RREQ ids (memory only: lookups age entries

@@ -89,6 +89,10 @@ class Aodv final : public Routing {
   void receive_reply(Rrep rrep, NodeId from);
   void receive_hello(const Rrep& hello);
   void receive_error(const Rerr& rerr, NodeId from);
+  // ns-3.37's reading of a RERR (rerr_covers_routes_in_any_state).
+  void relay_error_any_state(const Rerr& rerr, NodeId from);
+  // Invalidates the valid routes to the destinations `rerr` lists.
+  void invalidate_listed(const Rerr& rerr);
   void receive_ack(NodeId from);
   void update_route_to_neighbor(NodeId neighbor);
   // A unicast control message for another node, relayed as IP (control_via_route_to_neighbor).
@@ -121,6 +125,15 @@ class Aodv final : public Routing {
 
   // Link breakage (RFC 3561 section 6.11).
   void link_broken(NodeId neighbor, const Packet* failed);
+  // ns-3.37's reading of a broken link (rerr_covers_routes_in_any_state).
+  void report_routes_via(NodeId neighbor, const Packet* failed);
+  // A valid route whose link broke under `failed`: true if a local repair took it over (the
+  // packet is buffered).
+  bool repaired_locally(const Packet* failed, RouteEntry& route);
+  // With increment_seqno_on_break (RFC 3561 6.11): a broken route's number goes up by one, and a
+  // RERR's newer number is adopted.
+  void increment_broken_seqno(RouteEntry& route) const;
+  void adopt_reported_seqno(RouteEntry& route, std::uint32_t seq) const;
   void housekeeping();
 
   // Timers.

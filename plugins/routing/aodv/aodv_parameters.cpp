@@ -171,6 +171,15 @@ std::vector<ParamSpec> parameter_schema() {
                  "addressed to this node also the valid route to the next hop back toward its "
                  "sender and that neighbour's entry, as data for this node does; false: only "
                  "AODV's own rules refresh routes when a message is heard"),
+      bool_param("rerr_covers_routes_in_any_state", false,
+                 "true: ns-3.37's rule (SendRerrWhenBreaksLinkToNextHop, RecvError): a broken "
+                 "link to a neighbour with a route in any state is reported for the neighbour "
+                 "itself and every route through it, invalid and in-search ones included, and a "
+                 "RERR is relayed for every destination it lists whose route in any state leads "
+                 "through its sender, with the numbers it carried; the RERR goes to all those "
+                 "routes' precursors, then the valid ones among them are invalidated; false: "
+                 "only valid routes through the neighbour or the sender are reported and "
+                 "invalidated (RFC 3561 6.11)"),
       bool_param("enable_broadcast", true,
                  "rebroadcast application broadcasts (with duplicate detection and data_ttl)"),
       bool_param("enable_local_repair", false,
@@ -233,6 +242,7 @@ AodvParameters parameters_from(const ParamSet& params) {
   p.reply_seqno_plus_one_only = params.boolean("reply_seqno_plus_one_only");
   p.control_via_route_to_neighbor = params.boolean("control_via_route_to_neighbor");
   p.ip_input_refreshes_routes = params.boolean("ip_input_refreshes_routes");
+  p.rerr_covers_routes_in_any_state = params.boolean("rerr_covers_routes_in_any_state");
   p.enable_broadcast = params.boolean("enable_broadcast");
   p.enable_local_repair = params.boolean("enable_local_repair");
   p.local_add_ttl = count_param(params, "local_add_ttl");

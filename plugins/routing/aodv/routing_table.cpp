@@ -83,10 +83,20 @@ bool RoutingTable::refresh(NodeId destination, SimTime lifetime, SimTime now) {
 
 std::vector<UnreachableDestination> RoutingTable::valid_destinations_via(NodeId next_hop,
                                                                          SimTime now) {
+  return list_via(next_hop, now, true);
+}
+
+std::vector<UnreachableDestination> RoutingTable::destinations_via(NodeId next_hop, SimTime now) {
+  return list_via(next_hop, now, false);
+}
+
+std::vector<UnreachableDestination> RoutingTable::list_via(NodeId next_hop, SimTime now,
+                                                           bool valid_only) {
   purge(now);
   std::vector<UnreachableDestination> out;
   for (const auto& [destination, entry] : entries_) {
-    if (entry.is_valid() && entry.next_hop == next_hop) out.push_back({destination, entry.seq});
+    if (entry.next_hop != next_hop || (valid_only && !entry.is_valid())) continue;
+    out.push_back({destination, entry.seq});
   }
   std::sort(out.begin(), out.end(),
             [](const UnreachableDestination& a, const UnreachableDestination& b) {

@@ -68,6 +68,9 @@ class RoutingTable {
   // Valid routes whose next hop is `next_hop`, as (destination, sequence number), by destination.
   [[nodiscard]] std::vector<UnreachableDestination> valid_destinations_via(NodeId next_hop,
                                                                            SimTime now);
+  // As valid_destinations_via(), but routes in any state: invalid and in search too (ns-3.37's
+  // GetListOfDestinationWithNextHop).
+  [[nodiscard]] std::vector<UnreachableDestination> destinations_via(NodeId next_hop, SimTime now);
 
   // Applies expiry to every entry.
   void purge(SimTime now);
@@ -83,12 +86,14 @@ class RoutingTable {
  private:
   // Applies expiry to one entry; returns false if the entry must be deleted.
   bool age(RouteEntry& entry, SimTime now) const;
+  // Routes through `next_hop` after expiry, valid ones only or all, sorted by destination.
+  std::vector<UnreachableDestination> list_via(NodeId next_hop, SimTime now, bool valid_only);
 
   SimTime delete_period_;
   bool increment_seq_on_expiry_;
   // Looked up per packet, and large (a route per destination): a hash table, one probe where a
   // tree took a dozen cache misses at thousands of nodes. Its order reaches no result: the one
-  // walk that lists entries (valid_destinations_via) sorts what it lists.
+  // walk that lists entries (list_via) sorts what it lists.
   std::unordered_map<NodeId, RouteEntry> entries_;
   std::map<NodeId, SimTime> blacklist_;
 };

@@ -22,6 +22,9 @@
 //                                    the neighbour takes the IP source for the sender;
 //   ip_input_refreshes_routes        IP refreshes the route to a message's sender (and for one
 //                                    addressed to this node the way back) before AODV reads it.
+// And which routes a broken link or a RERR reports:
+//   rerr_covers_routes_in_any_state  SendRerrWhenBreaksLinkToNextHop and RecvError list routes
+//                                    through the neighbour in any state, and the neighbour itself.
 // Why they matter: docs/validation.md, "The saturated rows, and ns-3's control-message rules".
 #include <gtest/gtest.h>
 
@@ -664,6 +667,108 @@ TEST_P(IpInputRefreshesRoutes, AMessageForThisNodeRefreshesTheWayBackOrNot) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, IpInputRefreshesRoutes, ::testing::Bool(), reading_name);
+
+// ---- rerr_covers_routes_in_any_state ----------------------------------------------------------
+
+// This node relayed 7's route discovery for 8: route to 8 via neighbour 6 with precursor 5, and
+// 5 a neighbour too. HELLOs from 5 and 6 keep their links while the route to 8 may expire.
+class RerrCoversRoutesInAnyState : public BothReadings {
+ protected:
+  void relay_for_seconds(double seconds) {
+    make_with("rerr_covers_routes_in_any_state");
+    rreq(5, 7, 8, 1);
+    rrep(6, 8, 7, 1);
+    ASSERT_TRUE(route(8)->has_precursor(5));
+    for (int tick = 1; tick <= static_cast<int>(seconds); ++tick) {
+      run(1.0);
+      hello_from(5, tick);
+      hello_from(6, tick);
+    }
+  }
+  void break_link_to(NodeId neighbor) { aodv_->link_failed(data_to(neighbor, 901), neighbor); }
+  // `from`'s RERR for this node listing `destination` with sequence number `seq`.
+  void rerr_from(NodeId from, NodeId destination, std::uint32_t seq) {
+    Rerr rerr;
+    rerr.destinations.push_back({destination, seq});
+    hear(rerr, from);
+  }
+};
+
+TEST_P(RerrCoversRoutesInAnyState, ABrokenLinkReportsAnInvalidRouteThroughItOrNot) {
+  relay_for_seconds(11.0);  // the route to 8 (10 s) has expired; its entry is kept
+  ASSERT_EQ(route(8)->state, RouteState::invalid);
+  ASSERT_EQ(route(8)->next_hop, 6U);
+  break_link_to(6);
+  const auto errors = errors_about(8);
+  ASSERT_EQ(errors.size(), GetParam() ? 1U : 0U);
+  if (GetParam()) {
+    EXPECT_EQ(errors.front().next_hop, 5U);  // to the invalid route's precursor
+    const auto& listed = std::get<Rerr>(errors.front().message).destinations;
+    ASSERT_EQ(listed.size(), 2U);  // 6 itself and 8, by address
+    EXPECT_EQ(listed[0].destination, 6U);
+    EXPECT_EQ(listed[1].destination, 8U);
+  }
+  EXPECT_FALSE(route(6)->is_valid());  // the link's own route is invalidated either way
+}
+
+TEST_P(RerrCoversRoutesInAnyState, ARouteInSearchIsReportedAndStaysInSearch) {
+  relay_for_seconds(11.0);
+  aodv_->send(data_to(8, 902));  // this node's own packet for 8 starts a search for it
+  ASSERT_EQ(route(8)->state, RouteState::in_search);
+  ASSERT_EQ(route(8)->next_hop, 6U);  // the search keeps the old next hop
+  break_link_to(6);
+  EXPECT_EQ(errors_about(8).size(), GetParam() ? 1U : 0U);
+  EXPECT_EQ(route(8)->state, RouteState::in_search);
+}
+
+TEST_P(RerrCoversRoutesInAnyState, TheNeighbourIsReportedWhereverItsRouteLeads) {
+  relay_for_seconds(2.0);
+  rrep(4, 6, 0, 2);  // a RREP about 6 through 4 replaces the direct route: 3 hops
+  ASSERT_EQ(route(6)->next_hop, 4U);
+  ASSERT_TRUE(route(8)->is_valid());
+  break_link_to(6);                    // 6 is still a neighbour: its link breaks
+  EXPECT_FALSE(route(8)->is_valid());  // the valid route through 6, either way
+  const auto errors = errors_about(8);
+  ASSERT_EQ(errors.size(), 1U);
+  const auto& listed = std::get<Rerr>(errors.front().message).destinations;
+  // ns-3 reports 6 and invalidates its route through 4; RFC 3561 leaves that route alone.
+  EXPECT_EQ(listed.size(), GetParam() ? 2U : 1U);
+  EXPECT_EQ(route(6)->is_valid(), !GetParam());
+}
+
+TEST_P(RerrCoversRoutesInAnyState, ARerrAboutAnInvalidRouteIsRelayedWithItsNumberOrNot) {
+  relay_for_seconds(11.0);
+  ASSERT_EQ(route(8)->state, RouteState::invalid);
+  rerr_from(6, 8, 3);  // an older number than the route's 7
+  const auto errors = errors_about(8);
+  ASSERT_EQ(errors.size(), GetParam() ? 1U : 0U);
+  if (GetParam()) {
+    EXPECT_EQ(errors.front().next_hop, 5U);
+    EXPECT_EQ(std::get<Rerr>(errors.front().message).destinations.front().seq, 3U);
+  }
+}
+
+TEST_P(RerrCoversRoutesInAnyState, ARerrAboutAValidRouteIsRelayedEitherWay) {
+  relay_for_seconds(2.0);
+  ASSERT_TRUE(route(8)->is_valid());
+  rerr_from(6, 8, 3);
+  const auto errors = errors_about(8);
+  ASSERT_EQ(errors.size(), 1U);
+  EXPECT_EQ(errors.front().next_hop, 5U);
+  EXPECT_FALSE(route(8)->is_valid());
+  // ns-3 relays the number it was given; RFC 3561 the route's own.
+  EXPECT_EQ(std::get<Rerr>(errors.front().message).destinations.front().seq,
+            GetParam() ? 3U : route(8)->seq);
+}
+
+TEST_P(RerrCoversRoutesInAnyState, ARerrFromAnotherNeighbourChangesNothing) {
+  relay_for_seconds(2.0);
+  rerr_from(5, 8, 9);  // 5 is not the next hop to 8
+  EXPECT_TRUE(errors_about(8).empty());
+  EXPECT_TRUE(route(8)->is_valid());
+}
+
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RerrCoversRoutesInAnyState, ::testing::Bool(), reading_name);
 
 }  // namespace
 }  // namespace swarmnet::aodv
