@@ -1077,19 +1077,21 @@ void Aodv::report_routes_via(NodeId neighbor, const Packet* failed) {
   if (at == listed.end() || at->destination != neighbor) {
     listed.insert(at, {neighbor, to_neighbor->seq});
   }
-  context_->count("link_breaks");
   Rerr rerr;
   std::vector<NodeId> precursors;
+  bool breaks_a_route = false;  // link_breaks counts breaks that end a valid route
   for (const UnreachableDestination& d : listed) {
     RouteEntry* route = table_.find(d.destination, t);
     if (route == nullptr) continue;
     if (route->is_valid()) {
+      breaks_a_route = true;
       if (repaired_locally(failed, *route)) continue;
       increment_broken_seqno(*route);
     }
     merge(precursors, route->precursors);
     rerr.destinations.push_back({d.destination, route->seq});
   }
+  if (breaks_a_route) context_->count("link_breaks");
   if (rerr.destinations.empty()) return;
   send_error(rerr, precursors);
   invalidate_listed(rerr);

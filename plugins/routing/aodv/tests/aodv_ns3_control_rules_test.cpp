@@ -87,6 +87,18 @@ class AodvNs3ControlRules : public AodvOneNode {
     return PacketBuilder().uid(uid).from(0).to(destination).message(uid).payload_bytes(50).build();
   }
   void run(double seconds) { scheduler_.run_for(from_seconds(seconds)); }
+  // This node relays 7's discovery for 8: route to 8 via neighbour 6 with precursor 5. Then for
+  // `seconds` seconds HELLOs from 6, and from 5 too if `hear_precursor`, keep their links.
+  void relay_seven_to_eight(int seconds, bool hear_precursor) {
+    rreq(5, 7, 8, 1);
+    rrep(6, 8, 7, 1);
+    ASSERT_TRUE(route(8)->has_precursor(5));
+    for (int second = 1; second <= seconds; ++second) {
+      run(1.0);
+      hello_from(6, second);
+      if (hear_precursor) hello_from(5, second);
+    }
+  }
 
   struct Sent {
     Message message;
@@ -263,15 +275,8 @@ class RerrToValidPrecursors : public BothReadings {
  protected:
   void relay_then_break(bool precursor_route_valid) {
     make_with("rerr_to_valid_precursors");
-    rreq(5, 7, 8, 1);
-    rrep(6, 8, 7, 1);
-    ASSERT_TRUE(route(8)->has_precursor(5));
-    // HELLOs from 6 keep its link; 5 is heard from only while `precursor_route_valid`.
-    for (int second = 1; second <= 4; ++second) {
-      run(1.0);
-      hello_from(6, second);
-      if (precursor_route_valid) hello_from(5, second);
-    }
+    // 5 is heard from only while `precursor_route_valid`.
+    relay_seven_to_eight(4, precursor_route_valid);
     ASSERT_TRUE(route(8)->is_valid());
     ASSERT_EQ(route(5) != nullptr && route(5)->is_valid(), precursor_route_valid);
     broke_at_ = scheduler_.now();
@@ -674,16 +679,9 @@ INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, IpInputRefreshesRoutes, ::testing::Bool(), r
 // 5 a neighbour too. HELLOs from 5 and 6 keep their links while the route to 8 may expire.
 class RerrCoversRoutesInAnyState : public BothReadings {
  protected:
-  void relay_for_seconds(double seconds) {
+  void relay_for_seconds(int seconds) {
     make_with("rerr_covers_routes_in_any_state");
-    rreq(5, 7, 8, 1);
-    rrep(6, 8, 7, 1);
-    ASSERT_TRUE(route(8)->has_precursor(5));
-    for (int tick = 1; tick <= static_cast<int>(seconds); ++tick) {
-      run(1.0);
-      hello_from(5, tick);
-      hello_from(6, tick);
-    }
+    relay_seven_to_eight(seconds, true);
   }
   void break_link_to(NodeId neighbor) { aodv_->link_failed(data_to(neighbor, 901), neighbor); }
   // `from`'s RERR for this node listing `destination` with sequence number `seq`.
@@ -695,7 +693,7 @@ class RerrCoversRoutesInAnyState : public BothReadings {
 };
 
 TEST_P(RerrCoversRoutesInAnyState, ABrokenLinkReportsAnInvalidRouteThroughItOrNot) {
-  relay_for_seconds(11.0);  // the route to 8 (10 s) has expired; its entry is kept
+  relay_for_seconds(11);  // the route to 8 (10 s) has expired; its entry is kept
   ASSERT_EQ(route(8)->state, RouteState::invalid);
   ASSERT_EQ(route(8)->next_hop, 6U);
   break_link_to(6);
@@ -708,11 +706,12 @@ TEST_P(RerrCoversRoutesInAnyState, ABrokenLinkReportsAnInvalidRouteThroughItOrNo
     EXPECT_EQ(listed[0].destination, 6U);
     EXPECT_EQ(listed[1].destination, 8U);
   }
-  EXPECT_FALSE(route(6)->is_valid());  // the link's own route is invalidated either way
+  EXPECT_FALSE(route(6)->is_valid());           // the link's own route is invalidated either way
+  EXPECT_EQ(node_.counter("link_breaks"), 1U);  // it ended a valid route: 6's
 }
 
 TEST_P(RerrCoversRoutesInAnyState, ARouteInSearchIsReportedAndStaysInSearch) {
-  relay_for_seconds(11.0);
+  relay_for_seconds(11);
   aodv_->send(data_to(8, 902));  // this node's own packet for 8 starts a search for it
   ASSERT_EQ(route(8)->state, RouteState::in_search);
   ASSERT_EQ(route(8)->next_hop, 6U);  // the search keeps the old next hop
@@ -722,7 +721,7 @@ TEST_P(RerrCoversRoutesInAnyState, ARouteInSearchIsReportedAndStaysInSearch) {
 }
 
 TEST_P(RerrCoversRoutesInAnyState, TheNeighbourIsReportedWhereverItsRouteLeads) {
-  relay_for_seconds(2.0);
+  relay_for_seconds(2);
   rrep(4, 6, 0, 2);  // a RREP about 6 through 4 replaces the direct route: 3 hops
   ASSERT_EQ(route(6)->next_hop, 4U);
   ASSERT_TRUE(route(8)->is_valid());
@@ -737,7 +736,7 @@ TEST_P(RerrCoversRoutesInAnyState, TheNeighbourIsReportedWhereverItsRouteLeads) 
 }
 
 TEST_P(RerrCoversRoutesInAnyState, ARerrAboutAnInvalidRouteIsRelayedWithItsNumberOrNot) {
-  relay_for_seconds(11.0);
+  relay_for_seconds(11);
   ASSERT_EQ(route(8)->state, RouteState::invalid);
   rerr_from(6, 8, 3);  // an older number than the route's 7
   const auto errors = errors_about(8);
@@ -749,7 +748,7 @@ TEST_P(RerrCoversRoutesInAnyState, ARerrAboutAnInvalidRouteIsRelayedWithItsNumbe
 }
 
 TEST_P(RerrCoversRoutesInAnyState, ARerrAboutAValidRouteIsRelayedEitherWay) {
-  relay_for_seconds(2.0);
+  relay_for_seconds(2);
   ASSERT_TRUE(route(8)->is_valid());
   rerr_from(6, 8, 3);
   const auto errors = errors_about(8);
@@ -762,7 +761,7 @@ TEST_P(RerrCoversRoutesInAnyState, ARerrAboutAValidRouteIsRelayedEitherWay) {
 }
 
 TEST_P(RerrCoversRoutesInAnyState, ARerrFromAnotherNeighbourChangesNothing) {
-  relay_for_seconds(2.0);
+  relay_for_seconds(2);
   rerr_from(5, 8, 9);  // 5 is not the next hop to 8
   EXPECT_TRUE(errors_about(8).empty());
   EXPECT_TRUE(route(8)->is_valid());
