@@ -115,7 +115,10 @@ PluginInfo Aodv::info() {
       "its own and the RREQ's (6.6.1; reply_seqno_plus_one_only); link breaks increment the "
       "sequence numbers they report (6.11), and so do expiring routes "
       "(increment_seqno_on_break); a broken link or a RERR reports only valid routes (6.11), "
-      "where ns-3 reports routes in any state (rerr_covers_routes_in_any_state); a unicast message "
+      "where ns-3 reports routes in any state (rerr_covers_routes_in_any_state); a RREP updates a "
+      "route's fields and keeps its precursors, where ns-3 replaces the entry, precursors and all, "
+      "and takes a RREP for itself over a route in search whatever its freshness "
+      "(rrep_replaces_route); a unicast message "
       "goes straight to its neighbour, where "
       "ns-3's IP takes the route to it (control_via_route_to_neighbor), and only AODV's own "
       "rules refresh routes on a message heard, where ns-3's IP refreshes the sender's too "
@@ -717,7 +720,12 @@ void Aodv::receive_reply(Rrep rrep, NodeId from) {
 
   // Forward route to the destination (RFC 3561 6.7).
   RouteEntry* to_destination = table_.find(rrep.destination, t);
-  if (to_destination == nullptr || fresher(*to_destination, rrep.destination_seq, hops)) {
+  // ns-3.37 (RecvReply) also takes a RREP for this node over a route in search, fresher or not.
+  const bool replaces_search = params_.rrep_replaces_route && rrep.originator == self_ &&
+                               to_destination != nullptr &&
+                               to_destination->state == RouteState::in_search;
+  if (to_destination == nullptr || replaces_search ||
+      fresher(*to_destination, rrep.destination_seq, hops)) {
     if (to_destination == nullptr) {
       RouteEntry entry;
       entry.destination = rrep.destination;
@@ -730,6 +738,8 @@ void Aodv::receive_reply(Rrep rrep, NodeId from) {
     to_destination->state = RouteState::valid;
     to_destination->rreq_count = 0;
     to_destination->expires = t + from_ms(rrep.lifetime_ms);
+    // ns-3.37 puts a new entry in the route's place: the nodes that relied on it are forgotten.
+    if (params_.rrep_replaces_route) to_destination->precursors.clear();
   }
 
   if (rrep.originator == self_) {

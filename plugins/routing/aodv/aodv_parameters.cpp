@@ -180,6 +180,13 @@ std::vector<ParamSpec> parameter_schema() {
                  "routes' precursors, then the valid ones among them are invalidated; false: "
                  "only valid routes through the neighbour or the sender are reported and "
                  "invalidated (RFC 3561 6.11)"),
+      bool_param("rrep_replaces_route", false,
+                 "true: ns-3.37's rule (RecvReply): a RREP that updates the route to its "
+                 "destination puts a new entry in its place, so the route's precursors are "
+                 "forgotten (a later break reports to none of them), and a RREP for this node "
+                 "replaces a route in search whatever its freshness; false: the RREP updates the "
+                 "route's next hop, hop count, number and lifetime and its precursors stay, and "
+                 "only a fresher RREP updates a route (RFC 3561 6.7)"),
       bool_param("enable_broadcast", true,
                  "rebroadcast application broadcasts (with duplicate detection and data_ttl)"),
       bool_param("enable_local_repair", false,
@@ -243,6 +250,7 @@ AodvParameters parameters_from(const ParamSet& params) {
   p.control_via_route_to_neighbor = params.boolean("control_via_route_to_neighbor");
   p.ip_input_refreshes_routes = params.boolean("ip_input_refreshes_routes");
   p.rerr_covers_routes_in_any_state = params.boolean("rerr_covers_routes_in_any_state");
+  p.rrep_replaces_route = params.boolean("rrep_replaces_route");
   p.enable_broadcast = params.boolean("enable_broadcast");
   p.enable_local_repair = params.boolean("enable_local_repair");
   p.local_add_ttl = count_param(params, "local_add_ttl");

@@ -51,6 +51,7 @@ struct AodvParameters {
   bool control_via_route_to_neighbor = false;
   bool ip_input_refreshes_routes = false;
   bool rerr_covers_routes_in_any_state = false;
+  bool rrep_replaces_route = false;
   bool enable_broadcast = true;
   bool enable_local_repair = false;
   std::uint32_t local_add_ttl = 2;

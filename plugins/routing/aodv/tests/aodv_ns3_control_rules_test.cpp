@@ -25,6 +25,9 @@
 // And which routes a broken link or a RERR reports:
 //   rerr_covers_routes_in_any_state  SendRerrWhenBreaksLinkToNextHop and RecvError list routes
 //                                    through the neighbour in any state, and the neighbour itself.
+// And what a RREP does to the route it updates:
+//   rrep_replaces_route              RecvReply puts a new entry in the route's place (no
+//                                    precursors), and over a route in search for this node.
 // Why they matter: docs/validation.md, "The saturated rows, and ns-3's control-message rules".
 #include <gtest/gtest.h>
 
@@ -768,6 +771,53 @@ TEST_P(RerrCoversRoutesInAnyState, ARerrFromAnotherNeighbourChangesNothing) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RerrCoversRoutesInAnyState, ::testing::Bool(), reading_name);
+
+// ---- rrep_replaces_route ------------------------------------------------------------------------
+
+class RrepReplacesRoute : public BothReadings {
+ protected:
+  // A RREP for this node about `destination` with number `seq`, `hops_before` hops behind `from`.
+  void rrep_for_us(NodeId from, NodeId destination, std::uint32_t seq, std::uint8_t hops_before) {
+    Rrep rrep;
+    rrep.destination = destination;
+    rrep.destination_seq = seq;
+    rrep.originator = 0;
+    rrep.hop_count = hops_before;
+    rrep.lifetime_ms = 10000;
+    hear(rrep, from);
+  }
+};
+
+TEST_P(RrepReplacesRoute, AFresherRrepForgetsTheRoutesPrecursorsOrKeepsThem) {
+  make_with("rrep_replaces_route");
+  rreq(5, 7, 8, 1);  // this node relays 7's discovery for 8: route to 8 via 6, precursor 5
+  rrep(6, 8, 7, 1);
+  hello_from(5);
+  ASSERT_TRUE(route(8)->has_precursor(5));
+  rrep_for_us(4, 8, 9, 1);  // a fresher route to 8, through 4
+  ASSERT_EQ(route(8)->next_hop, 4U);
+  EXPECT_EQ(route(8)->has_precursor(5), !GetParam());
+  hello_from(4);
+  aodv_->link_failed(data_to(8, 901), 4);  // the new route breaks
+  EXPECT_FALSE(route(8)->is_valid());
+  // RFC 3561 still tells 5, which had relied on the old route; ns-3 tells nobody.
+  EXPECT_EQ(errors_about(8).size(), GetParam() ? 0U : 1U);
+}
+
+TEST_P(RrepReplacesRoute, ARrepForThisNodeTakesARouteInSearchFresherOrNot) {
+  make_with("rrep_replaces_route");
+  rrep_for_us(6, 8, 7, 1);  // route to 8 via 6, number 7, for 10 s
+  run(11.0);
+  ASSERT_EQ(route(8)->state, RouteState::invalid);
+  aodv_->send(data_to(8, 902));  // a search for 8 starts; the packet waits
+  ASSERT_EQ(route(8)->state, RouteState::in_search);
+  ASSERT_EQ(route(8)->seq, 8U);  // the expired route's number went up
+  rrep_for_us(4, 8, 7, 1);       // an older number than the route's
+  EXPECT_EQ(route(8)->is_valid(), GetParam());
+  EXPECT_EQ(data_sent().size(), GetParam() ? 1U : 0U);
+}
+
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RrepReplacesRoute, ::testing::Bool(), reading_name);
 
 }  // namespace
 }  // namespace swarmnet::aodv
