@@ -121,9 +121,10 @@ class Case:
         self.singles = []
 
 
-def run_case(args, name, xs, routing, duration_s, traffic):
+def run_case(args, name, xs, routing, duration_s, traffic, sets=(), ns3_options=()):
     """Runs the geometry in SwarmNet (no traffic), writes traffic(order) into its traffic.csv,
-    then replays it in SwarmNet's network half and in ns-3."""
+    then replays it in SwarmNet's network half and in ns-3. `sets` are further `--set`
+    overrides of the scenario, `ns3_options` further options of the ns-3 replay."""
     case = Case(name, routing)
     work = os.path.join(args.work, name)
     run_dir = os.path.join(work, "run")
@@ -137,7 +138,8 @@ def run_case(args, name, xs, routing, duration_s, traffic):
           "--set", f"duration_s={duration_s}", "--set", f"step_s={STEP_NS / 1e9}",
           "--set", "output.packet_trace=false", "--set", "output.mobility_trace=true",
           "--set", "network.routing=" + json.dumps(vr.routing_choice(routing)),
-          "--set", "network.arp=ns3"], work, "swarmnet-run")
+          "--set", "network.arp=ns3", *[a for o in sets for a in ("--set", o)]],
+         work, "swarmnet-run")
     case.order = _left_to_right(os.path.join(run_dir, "mobility.ns2"))
     rows = traffic(case)
     with open(os.path.join(run_dir, "traffic.csv"), "w", encoding="utf-8") as f:
@@ -152,7 +154,8 @@ def run_case(args, name, xs, routing, duration_s, traffic):
     deliveries = os.path.join(work, "ns3-deliveries.csv")
     frames = os.path.join(work, "ns3-frames.csv")
     _run([args.ns3, run_dir, "--routing", routing, "--seed", str(SEED), "-o", ns3_json,
-          "--delivery-trace", deliveries, "--frame-trace", frames] + vr.NS3_RADIO, work, "ns3")
+          "--delivery-trace", deliveries, "--frame-trace", frames] + vr.NS3_RADIO +
+         list(ns3_options), work, "ns3")
 
     with open(os.path.join(sn_dir, "summary.json"), encoding="utf-8") as f:
         case.summary = json.load(f)
@@ -412,14 +415,17 @@ CASES = [
 ]
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+def run_cases(description, cases):
+    """The command line of a tiny-trace agreement test: runs `cases`, each (name, title,
+    run(args) -> Case, check(Case) -> problems), and returns the exit status (SKIP without
+    SwarmNet's 802.11 stack)."""
+    parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--swarmnet", required=True, help="the swarmnet command")
     parser.add_argument("--ns3", required=True, help="the swarmnet_ns3_replay program")
     parser.add_argument("--work", required=True, help="directory for the runs")
     parser.add_argument("--scenario", default=os.path.join(vr.SOURCE_DIR, "configs", "validation",
                                                             "small.yaml"))
-    parser.add_argument("--case", choices=[c[0] for c in CASES], action="append",
+    parser.add_argument("--case", choices=[c[0] for c in cases], action="append",
                         help="run only this case (repeatable)")
     args = parser.parse_args()
     stack, reason = vr.detect_stack(args.swarmnet, args.scenario)
@@ -427,11 +433,11 @@ def main():
         print("skipped: SwarmNet's 802.11 stack is not available:\n  " + reason)
         return SKIP
     failed = False
-    for name, xs, routing, duration_s, traffic, check in CASES:
+    for name, title, run, check in cases:
         if args.case and name not in args.case:
             continue
-        print(f"{name}: {len(xs)} nodes, routing {routing}")
-        case = run_case(args, name, xs, routing, duration_s, traffic)
+        print(f"{name}: {title}")
+        case = run(args)
         print_messages(case)
         problems = check(case)
         for problem in problems:
@@ -439,6 +445,14 @@ def main():
         print(f"  {'FAIL' if problems else 'pass'}")
         failed = failed or bool(problems)
     return 1 if failed else 0
+
+
+def main():
+    cases = [(name, f"{len(xs)} nodes, routing {routing}",
+              lambda args, name=name, xs=xs, routing=routing, duration_s=duration_s,
+              traffic=traffic: run_case(args, name, xs, routing, duration_s, traffic), check)
+             for name, xs, routing, duration_s, traffic, check in CASES]
+    return run_cases(__doc__.split("\n")[0], cases)
 
 
 if __name__ == "__main__":

@@ -11,6 +11,8 @@
 #include <ns3/mobility-module.h>
 #include <ns3/network-module.h>
 #include <ns3/ns2-mobility-helper.h>
+#include <ns3/traffic-control-helper.h>
+#include <ns3/traffic-control-layer.h>
 #include <ns3/wifi-module.h>
 #include <sys/resource.h>
 
@@ -67,6 +69,10 @@ struct Options {
   std::string arp_entries = "none";
   bool aligned = false;  // --aligned: the configuration aligned with SwarmNet before issue 19
   double queue_max_delay_s = 0.0;  // 0: ns-3's default
+  // The queue discipline above the MAC: "fq_codel", which Ipv4AddressHelper::Assign installs
+  // (ns-3 as users run it), or "none": the MAC queue is the only queue, as in SwarmNet and the
+  // ns-3 engine.
+  std::string queue_disc = "fq_codel";
   // Flooding.
   sv::FloodingConfig flooding;
 };
@@ -82,6 +88,16 @@ struct MacCounters {
   std::uint64_t tx_drops = 0;   // frames the MAC gave up (retry limit, queue)
   std::map<std::string, std::uint64_t> dropped_mpdus;  // WifiMac DroppedMpdu events by reason
   std::map<std::string, std::uint64_t> rx_drops;       // PhyRxDrop events by reason
+  // MPDUs the MAC's queue discarded before their first transmission, group-addressed ones
+  // included (DroppedMpdu above counts unicast ones only, as AODV sees them): "expired" waited
+  // longer than WifiMacQueue's MaxDelay, "full" met a queue of MaxSize packets.
+  std::uint64_t queue_expired = 0;
+  std::uint64_t queue_full = 0;
+  // Packets dropped above the MAC: by the queue discipline (fq_codel: CoDel's drops and its
+  // overflow), or by the traffic-control layer when there is none and the device is stopped
+  // because its MAC queue is full.
+  std::uint64_t queue_disc_drops = 0;
+  std::uint64_t traffic_control_drops = 0;
 };
 
 // ARP (ns-3's default stack, --arp-entries none): messages handed to the MAC (MacTx), their
@@ -421,6 +437,13 @@ void on_dropped_mpdu(ns3::WifiMacDropReason reason, ns3::Ptr<const ns3::WifiMpdu
   }
 }
 
+void on_queue_expired(ns3::Ptr<const ns3::WifiMpdu> /*mpdu*/) { ++g_mac.queue_expired; }
+void on_queue_full(ns3::Ptr<const ns3::WifiMpdu> /*mpdu*/) { ++g_mac.queue_full; }
+void on_queue_disc_drop(ns3::Ptr<const ns3::QueueDiscItem> /*item*/) { ++g_mac.queue_disc_drops; }
+void on_traffic_control_drop(ns3::Ptr<const ns3::Packet> /*packet*/) {
+  ++g_mac.traffic_control_drops;
+}
+
 // Every IP packet sent on a wireless interface: AODV control packets are counted by type.
 void on_ip_tx(ns3::Ptr<const ns3::Packet> packet, ns3::Ptr<ns3::Ipv4> ipv4,
               std::uint32_t interface) {
@@ -663,6 +686,9 @@ nlohmann::ordered_json run(const Options& options) {
   ns3::Ipv4AddressHelper addresses;
   addresses.SetBase("10.1.0.0", kSubnetMask);
   const ns3::Ipv4InterfaceContainer interfaces = addresses.Assign(devices);
+  // Assign has put fq_codel above each device's MAC queue, with flow control: the device stops
+  // taking packets while its MAC queue is full, and they wait (or are dropped by CoDel) above it.
+  if (options.queue_disc == "none") ns3::TrafficControlHelper().Uninstall(devices);
   // By default (`none`) ARP runs as ns-3 users run it: requests and replies on the air, packets
   // queued (3 at most) behind a pending resolution, and ns-3's AODV mapping its neighbours to MAC
   // addresses from the alive entries, so that the MAC's DroppedMpdu reports break links. The
@@ -722,6 +748,21 @@ nlohmann::ordered_json run(const Options& options) {
                                      ns3::MakeCallback(&on_mac_tx));
   ns3::Config::ConnectWithoutContext("/NodeList/*/DeviceList/*/$ns3::WifiNetDevice/Mac/DroppedMpdu",
                                      ns3::MakeCallback(&on_dropped_mpdu));
+  for (std::uint32_t i = 0; i < node_count; ++i) {
+    const auto wifi = ns3::DynamicCast<ns3::WifiNetDevice>(devices.Get(i));
+    const ns3::Ptr<ns3::WifiMacQueue> queue = wifi->GetMac()->GetTxop()->GetWifiMacQueue();
+    queue->TraceConnectWithoutContext("Expired", ns3::MakeCallback(&on_queue_expired));
+    queue->TraceConnectWithoutContext("DropBeforeEnqueue", ns3::MakeCallback(&on_queue_full));
+    const ns3::Ptr<ns3::TrafficControlLayer> traffic_control =
+        nodes.Get(i)->GetObject<ns3::TrafficControlLayer>();
+    traffic_control->TraceConnectWithoutContext("TcDrop",
+                                                ns3::MakeCallback(&on_traffic_control_drop));
+    const ns3::Ptr<ns3::QueueDisc> queue_disc =
+        traffic_control->GetRootQueueDiscOnDevice(devices.Get(i));
+    if (queue_disc != nullptr) {
+      queue_disc->TraceConnectWithoutContext("Drop", ns3::MakeCallback(&on_queue_disc_drop));
+    }
+  }
   ns3::Config::ConnectWithoutContext("/NodeList/*/$ns3::Ipv4L3Protocol/Tx",
                                      ns3::MakeCallback(&on_ip_tx));
   ns3::Config::ConnectWithoutContext("/NodeList/*/$ns3::Ipv4L3Protocol/UnicastForward",
@@ -794,7 +835,13 @@ nlohmann::ordered_json run(const Options& options) {
                 {"rx_errors", g_mac.rx_errors},
                 {"tx_drops", g_mac.tx_drops},
                 {"rx_drops", g_mac.rx_drops},
-                {"dropped_unicast_mpdus", g_mac.dropped_mpdus}};
+                {"dropped_unicast_mpdus", g_mac.dropped_mpdus},
+                {"queue_drops",
+                 {{"expired", g_mac.queue_expired},
+                  {"full", g_mac.queue_full},
+                  {"queue_disc", g_mac.queue_disc_drops},
+                  {"traffic_control", g_mac.traffic_control_drops}}},
+                {"queue_disc", options.queue_disc}};
   const std::uint64_t arp_packet_drops = g_arp.queue_full + g_arp.dead_entry +
                                          g_arp.queue_full_or_dead_entry + g_arp.retries_exhausted;
   out["arp"] = {{"entries", options.arp_entries},
@@ -922,6 +969,13 @@ int main(int argc, char** argv) {
                  "WifiMacQueue MaxSize in packets (0: ns-3's default, 500)");
   app.add_option("--queue-max-delay-s", options.queue_max_delay_s,
                  "WifiMacQueue MaxDelay (0: ns-3's default, 0.5 s)");
+  app.add_option("--queue-disc", options.queue_disc,
+                 "queue discipline above the MAC. fq_codel: what Ipv4AddressHelper installs, "
+                 "with flow control, so the MAC queue stops taking packets when full and they "
+                 "wait above it (ns-3 as users run it); none: the MAC queue is the only queue, as "
+                 "in SwarmNet and the ns-3 engine")
+      ->check(CLI::IsMember({"fq_codel", "none"}))
+      ->capture_default_str();
   CLI::Option* arp_entries =
       app.add_option("--arp-entries", options.arp_entries,
                      "ARP entries filled in advance. none: no entry filled, ARP resolves by "

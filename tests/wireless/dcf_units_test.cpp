@@ -141,8 +141,10 @@ TEST(DcfInterfaceQueue, BoundedFifoWithExpiry) {
   Packet c;
   c.uid = 3;
   EXPECT_TRUE(queue.push(a, 1, kTimeZero));
+  EXPECT_FALSE(queue.full(false));
+  EXPECT_TRUE(queue.full(true));  // the packet of an exchange under way takes the second place
   EXPECT_TRUE(queue.push(b, 1, us(600)));
-  EXPECT_TRUE(queue.full());
+  EXPECT_TRUE(queue.full(false));
   EXPECT_FALSE(queue.push(c, 1, us(600)));
   std::vector<std::uint64_t> expired;
   const auto item =

@@ -33,7 +33,8 @@ PluginInfo Dcf80211::info() {
       "is dropped (retry_limit). Broadcasts are sent once, without RTS or ACK. Duplicates "
       "(retries of an already received sequence number) are acknowledged but not delivered "
       "twice.\n"
-      "Queue: a FIFO of queue_limit packets (the packet being sent excluded); a packet that "
+      "Queue: a FIFO of queue_limit packets, the packet of the exchange under way included (as "
+      "ns-3 keeps an MPDU in its queue until acknowledged or dropped); a packet that "
       "waited longer than queue_max_delay_s is dropped when it reaches the head "
       "(buffer_timeout), and a packet arriving at a full queue first has the expired packets "
       "removed (buffer_timeout), then is dropped (queue_full) if the queue is still full, like "
@@ -118,10 +119,10 @@ void Dcf80211::drop_expired(const std::vector<InterfaceQueue::Item>& expired) {
 // once the MAC's own state is settled.
 void Dcf80211::enqueue(Packet packet, NodeId next_hop) {
   std::vector<InterfaceQueue::Item> expired;
-  if (queue_.full()) {
+  if (queue_.full(exchange_.has_value())) {
     // ns-3's WifiMacQueue::Insert: a full queue first drops its expired packets.
     expired = queue_.take_expired(now());
-    if (queue_.full()) {
+    if (queue_.full(exchange_.has_value())) {
       drop_expired(expired);
       drop_mpdu(packet, next_hop, DropReason::queue_full);
       return;

@@ -34,7 +34,12 @@ class InterfaceQueue {
 
   [[nodiscard]] std::size_t size() const { return items_.size(); }
   [[nodiscard]] bool empty() const { return items_.empty(); }
-  [[nodiscard]] bool full() const { return items_.size() >= limit_; }
+  // True when no packet may join: the queue holds `limit` packets, counting the one taken out
+  // for an exchange still under way (`in_exchange`). ns-3's WifiMacQueue keeps an MPDU until its
+  // exchange ends (acknowledged, or dropped), so it counts against MaxSize.
+  [[nodiscard]] bool full(bool in_exchange) const {
+    return items_.size() + (in_exchange ? 1U : 0U) >= limit_;
+  }
 
  private:
   std::size_t limit_;

@@ -42,8 +42,8 @@ class Dcf80211LinkFeedback : public ::testing::Test {
 };
 
 TEST_F(Dcf80211LinkFeedback, AUnicastPacketRefusedByAFullQueueIsReported) {
-  make(1, 0.5, "every_drop");
-  mac_->enqueue(packet(1, 1), 1);  // being sent: not in the queue
+  make(2, 0.5, "every_drop");
+  mac_->enqueue(packet(1, 1), 1);  // being sent: it takes one of the two places
   mac_->enqueue(packet(2, 1), 1);  // fills the queue
   mac_->enqueue(packet(3, 2), 2);
   ASSERT_EQ(node_.dropped.size(), 1U);
@@ -69,12 +69,33 @@ TEST_F(Dcf80211LinkFeedback, AUnicastPacketRefusedByAFullQueueIsReported) {
 }
 
 TEST_F(Dcf80211LinkFeedback, RetryLimitModeReportsNoQueueDrop) {
-  make(1, 0.5, "retry_limit");
+  make(2, 0.5, "retry_limit");
   mac_->enqueue(packet(1, 1), 1);
   mac_->enqueue(packet(2, 1), 1);
   mac_->enqueue(packet(3, 2), 2);
   EXPECT_EQ(drops(DropReason::queue_full), 1U);
   EXPECT_TRUE(node_.link_failures.empty());
+}
+
+// ns-3.37 keeps an MPDU in its WifiMacQueue until its exchange ends: the packet on the air
+// counts against the limit until it is acknowledged or dropped, then its place is free.
+TEST_F(Dcf80211LinkFeedback, ThePacketOfAnExchangeUnderWayTakesAPlaceInTheQueue) {
+  make(1, 0.5, "every_drop");
+  mac_->enqueue(packet(1, 1), 1);
+  scheduler_.run_for(from_seconds(0.001));
+  ASSERT_EQ(node_.transmitted.size(), 1U);
+  mac_->enqueue(packet(2, 2), 2);  // packet 1 is on the air: no place left
+  ASSERT_EQ(node_.dropped.size(), 1U);
+  EXPECT_EQ(node_.dropped[0].packet.uid, 2U);
+  EXPECT_EQ(node_.dropped[0].reason, DropReason::queue_full);
+  mac_->on_transmit_end();
+  scheduler_.run_for(from_seconds(0.001));  // no ACK: packet 1 dropped at the retry limit
+  EXPECT_EQ(drops(DropReason::retry_limit), 1U);
+  mac_->enqueue(packet(3, 3), 3);  // its place is free again
+  EXPECT_EQ(drops(DropReason::queue_full), 1U);
+  scheduler_.run_for(from_seconds(0.001));
+  ASSERT_EQ(node_.transmitted.size(), 2U);
+  EXPECT_EQ(node_.transmitted[1].frame.packet->uid, 3U);
 }
 
 // Packet 1 is never acknowledged (retry limit 1) and ends after packet 2 has waited longer than
@@ -112,7 +133,7 @@ TEST_F(Dcf80211LinkFeedback, RetryLimitModeReportsOnlyTheRetryLimit) {
 // ns-3's WifiMacQueue::Insert: a packet arriving at a full queue first has the expired packets
 // removed (Expired, reported), and is queued if that made room.
 TEST_F(Dcf80211LinkFeedback, AFullQueueDropsItsExpiredPacketsBeforeRefusingOne) {
-  make(1, 0.001, "every_drop");
+  make(2, 0.001, "every_drop");
   mac_->enqueue(packet(1, 1), 1);
   mac_->enqueue(packet(2, 2), 2);
   scheduler_.run_for(from_seconds(0.002));  // packet 1 on the air, packet 2 expired in the queue
