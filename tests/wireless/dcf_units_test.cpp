@@ -141,10 +141,8 @@ TEST(DcfInterfaceQueue, BoundedFifoWithExpiry) {
   Packet c;
   c.uid = 3;
   EXPECT_TRUE(queue.push(a, 1, kTimeZero));
-  EXPECT_FALSE(queue.full(false));
-  EXPECT_TRUE(queue.full(true));  // the packet of an exchange under way takes the second place
   EXPECT_TRUE(queue.push(b, 1, us(600)));
-  EXPECT_TRUE(queue.full(false));
+  EXPECT_TRUE(queue.full());
   EXPECT_FALSE(queue.push(c, 1, us(600)));
   std::vector<std::uint64_t> expired;
   const auto item =
@@ -153,6 +151,25 @@ TEST(DcfInterfaceQueue, BoundedFifoWithExpiry) {
   EXPECT_EQ(item->packet.uid, 2U);
   EXPECT_EQ(expired, std::vector<std::uint64_t>{1});
   EXPECT_TRUE(queue.empty());
+}
+
+// As ns-3's WifiMacQueue keeps an MPDU until its exchange ends, the packet popped for an exchange
+// keeps its place until released.
+TEST(DcfInterfaceQueue, APoppedPacketKeepsItsPlaceUntilReleased) {
+  InterfaceQueue queue(2, us(1000));
+  Packet a;
+  a.uid = 1;
+  EXPECT_TRUE(queue.push(a, 1, kTimeZero));
+  const auto item = queue.pop(us(10), [](const InterfaceQueue::Item&) {});
+  ASSERT_TRUE(item.has_value());
+  EXPECT_TRUE(queue.empty());
+  EXPECT_TRUE(queue.push(a, 1, us(10)));
+  EXPECT_TRUE(queue.full());  // one waiting, one held
+  EXPECT_FALSE(queue.push(a, 1, us(10)));
+  queue.release();
+  EXPECT_FALSE(queue.full());
+  EXPECT_TRUE(queue.push(a, 1, us(10)));
+  EXPECT_TRUE(queue.full());
 }
 
 // ns-3's WifiMacQueue::Insert on a full queue removes the expired packets first.

@@ -33,8 +33,9 @@ PluginInfo Dcf80211::info() {
       "is dropped (retry_limit). Broadcasts are sent once, without RTS or ACK. Duplicates "
       "(retries of an already received sequence number) are acknowledged but not delivered "
       "twice.\n"
-      "Queue: a FIFO of queue_limit packets, the packet of the exchange under way included (as "
-      "ns-3 keeps an MPDU in its queue until acknowledged or dropped); a packet that "
+      "Queue: a FIFO of queue_limit places, taken by the waiting packets and by the packet of the "
+      "exchange under way until it is acknowledged or dropped (a broadcast: until it goes on the "
+      "air), as in ns-3's WifiMacQueue; a packet that "
       "waited longer than queue_max_delay_s is dropped when it reaches the head "
       "(buffer_timeout), and a packet arriving at a full queue first has the expired packets "
       "removed (buffer_timeout), then is dropped (queue_full) if the queue is still full, like "
@@ -119,10 +120,10 @@ void Dcf80211::drop_expired(const std::vector<InterfaceQueue::Item>& expired) {
 // once the MAC's own state is settled.
 void Dcf80211::enqueue(Packet packet, NodeId next_hop) {
   std::vector<InterfaceQueue::Item> expired;
-  if (queue_.full(exchange_.has_value())) {
+  if (queue_.full()) {
     // ns-3's WifiMacQueue::Insert: a full queue first drops its expired packets.
     expired = queue_.take_expired(now());
-    if (queue_.full(exchange_.has_value())) {
+    if (queue_.full()) {
       drop_expired(expired);
       drop_mpdu(packet, next_hop, DropReason::queue_full);
       return;
@@ -191,6 +192,8 @@ void Dcf80211::access_granted() {
 }
 
 void Dcf80211::send_data() {
+  // ns-3 dequeues a group-addressed MPDU as it goes on the air (no acknowledgment to wait for).
+  if (exchange_->next_hop == kBroadcast) queue_.release();
   transmit(make_data(exchange_->packet, exchange_->next_hop, header_bytes_, exchange_->sequence,
                      exchange_->retry, timing_),
            TxKind::data);
@@ -261,7 +264,8 @@ void Dcf80211::exchange_failed() {
   }
   if (give_up) {
     // Routing hears of it while the exchange still stands, so that a packet it sends at once
-    // (a RERR) queues behind the ones waiting.
+    // (a RERR) queues behind the ones waiting; the dropped packet still holds its place then, as
+    // ns-3 reports DroppedMpdu before it dequeues the MPDU.
     const Packet packet = exchange_->packet;
     const NodeId next_hop = exchange_->next_hop;
     drop_mpdu(packet, next_hop, DropReason::retry_limit);
@@ -278,6 +282,7 @@ void Dcf80211::exchange_failed() {
 
 void Dcf80211::exchange_finished() {
   exchange_.reset();
+  queue_.release();
   awaiting_ = Await::none;
   timeout_pending_busy_ = false;
   cw_.reset();

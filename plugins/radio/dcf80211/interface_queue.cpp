@@ -5,7 +5,7 @@
 namespace swarmnet::dcf80211 {
 
 bool InterfaceQueue::push(Packet packet, NodeId next_hop, SimTime now) {
-  if (items_.size() >= limit_) return false;
+  if (full()) return false;
   items_.push_back(Item{std::move(packet), next_hop, now});
   return true;
 }
@@ -19,6 +19,7 @@ std::optional<InterfaceQueue::Item> InterfaceQueue::pop(
       expired(item);
       continue;
     }
+    place_held_ = true;
     return item;
   }
   return std::nullopt;

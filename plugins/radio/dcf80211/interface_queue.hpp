@@ -1,5 +1,7 @@
 // The MAC's interface queue: a bounded FIFO whose packets expire after a maximum delay (ns-3's
-// WifiMacQueue: 500 packets, 500 ms).
+// WifiMacQueue: 500 packets, 500 ms). As in ns-3, the packet taken out for an exchange keeps its
+// place until released: ns-3 keeps a unicast MPDU in its queue until the exchange ends
+// (acknowledged or dropped) and a group-addressed one until it goes on the air.
 #pragma once
 
 #include <cstddef>
@@ -22,11 +24,13 @@ class InterfaceQueue {
 
   InterfaceQueue(std::size_t limit, SimTime max_delay) : limit_(limit), max_delay_(max_delay) {}
 
-  // False (and nothing queued) when the queue holds `limit` packets.
+  // False (and nothing queued) when the queue is full().
   bool push(Packet packet, NodeId next_hop, SimTime now);
   // The oldest packet that has not waited longer than max_delay; expired ones met on the way are
-  // removed and passed to `expired`.
+  // removed and passed to `expired`. The packet returned keeps its place until release().
   std::optional<Item> pop(SimTime now, const std::function<void(const Item&)>& expired);
+  // Frees the place of the packet last popped (a no-op when it is free already).
+  void release() { place_held_ = false; }
   // Removes every packet that has waited longer than max_delay (the queue is in arrival order,
   // so they lead it) and returns them, oldest first. ns-3's WifiMacQueue does this when a packet
   // arrives at a full queue, before it refuses one.
@@ -34,17 +38,14 @@ class InterfaceQueue {
 
   [[nodiscard]] std::size_t size() const { return items_.size(); }
   [[nodiscard]] bool empty() const { return items_.empty(); }
-  // True when no packet may join: the queue holds `limit` packets, counting the one taken out
-  // for an exchange still under way (`in_exchange`). ns-3's WifiMacQueue keeps an MPDU until its
-  // exchange ends (acknowledged, or dropped), so it counts against MaxSize.
-  [[nodiscard]] bool full(bool in_exchange) const {
-    return items_.size() + (in_exchange ? 1U : 0U) >= limit_;
-  }
+  // `limit` places taken, by waiting packets and the popped one not yet released.
+  [[nodiscard]] bool full() const { return items_.size() + (place_held_ ? 1U : 0U) >= limit_; }
 
  private:
   std::size_t limit_;
   SimTime max_delay_;
   std::deque<Item> items_;
+  bool place_held_ = false;
 };
 
 }  // namespace swarmnet::dcf80211

@@ -98,6 +98,23 @@ TEST_F(Dcf80211LinkFeedback, ThePacketOfAnExchangeUnderWayTakesAPlaceInTheQueue)
   EXPECT_EQ(node_.transmitted[1].frame.packet->uid, 3U);
 }
 
+// A broadcast gives its place up as it goes on the air, as ns-3 dequeues a group-addressed MPDU
+// then: with a queue of one place, a packet handed down during its airtime is queued.
+TEST_F(Dcf80211LinkFeedback, ABroadcastGivesItsPlaceUpAsItGoesOnTheAir) {
+  make(1, 0.5, "every_drop");
+  mac_->enqueue(packet(1, kBroadcast), kBroadcast);
+  mac_->enqueue(packet(2, 1), 1);  // the broadcast waits for the medium: no place left
+  EXPECT_EQ(drops(DropReason::queue_full), 1U);
+  scheduler_.run_for(from_seconds(0.001));
+  ASSERT_EQ(node_.transmitted.size(), 1U);  // the broadcast is on the air
+  mac_->enqueue(packet(3, 1), 1);
+  EXPECT_EQ(drops(DropReason::queue_full), 1U);
+  mac_->on_transmit_end();
+  scheduler_.run_for(from_seconds(0.001));
+  ASSERT_EQ(node_.transmitted.size(), 2U);
+  EXPECT_EQ(node_.transmitted[1].frame.packet->uid, 3U);
+}
+
 // Packet 1 is never acknowledged (retry limit 1) and ends after packet 2 has waited longer than
 // queue_max_delay_s: both drops reach routing, in that order.
 void run_retry_then_expiry(TestScheduler& scheduler, FakeMacContext& node, Dcf80211& mac) {
