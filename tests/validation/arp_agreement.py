@@ -26,6 +26,7 @@ message at its step's start plus an offset hashed from the seed and its id
 nearly coincide. SwarmNet's packet trace has no ARP frame, so its jitter is inferred from the
 first message's delay; ns-3's is read from its frame trace. Python standard library only.
 """
+import functools
 import os
 import sys
 
@@ -233,8 +234,8 @@ CASES = [
 
 def main():
     cases = [(name, f"{len(xs)} nodes, routing {routing}",
-              lambda args, name=name, xs=xs, routing=routing, duration_s=duration_s,
-              traffic=traffic: tt.run_case(args, name, xs, routing, duration_s, traffic), check)
+              functools.partial(tt.run_case, name=name, xs=xs, routing=routing,
+                                duration_s=duration_s, traffic=traffic), check)
              for name, xs, routing, duration_s, traffic, check in CASES]
     return tt.run_cases(__doc__.split("\n")[0], cases)
 

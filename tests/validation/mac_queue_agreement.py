@@ -30,6 +30,7 @@ no queue discipline (docs/validation.md). These cases are what lets the validati
 ns-3's `queue_drops` beside SwarmNet's drop reasons (docs/validation.md, the saturated flooding
 row). Python standard library only.
 """
+import functools
 import os
 import sys
 
@@ -63,8 +64,7 @@ def lead_id(burst):
 def in_flight_traffic(case):
     rows = burst_traffic(case)
     source, destination = case.order[0], case.order[-1]
-    case.lead = lead_id(case.burst)
-    return rows + [(case.lead, 50, source, destination)]
+    return rows + [(lead_id(case.burst), 50, source, destination)]
 
 
 def queue_figures(case):
@@ -117,10 +117,10 @@ def check_full(case):
 
 def check_in_flight(case):
     problems = full_problems(case, 9)
-    if tt.delay_ns(case.sn, case.lead) is None or tt.delay_ns(case.ns3, case.lead) is None:
-        problems.append(f"the lead message {case.lead} was not delivered on both sides")
-    elif case.ns3[case.lead]["inject"] + tt.delay_ns(case.ns3, case.lead) <= min(
-            case.ns3[m]["inject"] for m in case.burst):
+    lead = lead_id(case.burst)
+    if tt.delay_ns(case.sn, lead) is None or tt.delay_ns(case.ns3, lead) is None:
+        problems.append(f"the lead message {lead} was not delivered on both sides")
+    elif case.ns3[lead]["deliver"] <= min(case.ns3[m]["inject"] for m in case.burst):
         problems.append("ns-3 delivered the lead message before the burst came: nothing was "
                         "in flight, the case tests nothing")
     return problems
@@ -157,9 +157,8 @@ CASES = [
 
 def main():
     cases = [(name, f"2 nodes, routing direct, a burst of {BURST}",
-              lambda args, name=name, sets=sets, ns3_options=ns3_options, traffic=traffic:
-              tt.run_case(args, name, XS, "direct", 1.0, traffic, sets=sets,
-                           ns3_options=ns3_options), check)
+              functools.partial(tt.run_case, name=name, xs=XS, routing="direct", duration_s=1.0,
+                                traffic=traffic, sets=sets, ns3_options=ns3_options), check)
              for name, sets, ns3_options, traffic, check in CASES]
     return tt.run_cases(__doc__.split("\n")[0], cases)
 
