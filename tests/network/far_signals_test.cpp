@@ -38,12 +38,6 @@ PhyConfig sinr_config() {
   return config;
 }
 
-// The lower of the two carrier-sense thresholds, as the channel hands it to FarSignals.
-double sensing_mw(const PhyConfig& config) {
-  return std::min(dbm_to_milliwatts(config.cca_threshold_dbm),
-                  dbm_to_milliwatts(config.energy_detection_dbm));
-}
-
 std::string describe(const FarSignal& s) {
   std::ostringstream out;
   out << "{uid " << s.frame_uid << ", " << s.power_dbm << " dBm, start (" << s.start.time.count()
@@ -93,8 +87,10 @@ void random_links(RandomStream& random, std::uint32_t nodes, ChannelLinks& set) 
     const bool far = random.bernoulli(0.6);
     // Delays from a handful of values: receivers at equal distance are ordered by id.
     const SimTime delay{static_cast<std::int64_t>(random.below(8)) * 100};
+    // Units differ per link, so that an entry carrying another link's units is seen.
+    const std::int64_t units = far ? 1 + static_cast<std::int64_t>(random.below(1000)) : 0;
     set.links.push_back(
-        ChannelLink{delay, receiver, far, nullptr, far ? -90.0 : -70.0, 0.0, far ? 5 : 0});
+        ChannelLink{delay, receiver, far, nullptr, far ? -90.0 : -70.0, 0.0, units});
   }
   std::sort(set.links.begin(), set.links.end(), [](const ChannelLink& a, const ChannelLink& b) {
     return a.delay != b.delay ? a.delay < b.delay : a.receiver < b.receiver;
@@ -110,9 +106,14 @@ TEST(FarSignalIndex, FarLinkFindsEveryFarReceiverAndNothingElse) {
       random_links(random, nodes, set);
       std::vector<std::uint32_t> scratch(nodes, 0xdeadbeefU);
       set.index_far(scratch);
-      // The far receivers ascending, each with its link.
+      // The far receivers ascending, each with its link and that link's units.
       for (std::size_t k = 0; k + 1 < set.far_by_receiver.size(); ++k) {
-        ASSERT_LT(set.far_by_receiver[k].first, set.far_by_receiver[k + 1].first);
+        ASSERT_LT(set.far_by_receiver[k].receiver, set.far_by_receiver[k + 1].receiver);
+      }
+      for (const FarLink& far : set.far_by_receiver) {
+        ASSERT_LT(far.link, set.links.size());
+        ASSERT_EQ(set.links[far.link].receiver, far.receiver);
+        ASSERT_EQ(set.links[far.link].far_units, far.units);
       }
       std::size_t far_links = 0;
       for (const ChannelLink& link : set.links) far_links += link.far ? 1 : 0;
@@ -334,7 +335,7 @@ TEST(FarSignalIndex, FarStartsAndFarSignalsDuringMatchABruteForceScan) {
         const ChannelLinks& recent =
             *sent[sent.size() - 1 - random.below(std::min<std::size_t>(sent.size(), 4))].links;
         if (!recent.far_by_receiver.empty() && random.bernoulli(0.8)) {
-          receiver = recent.far_by_receiver[random.below(recent.far_by_receiver.size())].first;
+          receiver = recent.far_by_receiver[random.below(recent.far_by_receiver.size())].receiver;
         }
         const SimTime lo = std::max(SimTime{}, now - FarSignalSource::kFarStartHistory);
         const SimTime hi = now + us(3000);
@@ -395,7 +396,7 @@ class FarSignalsAtOneReceiver : public ::testing::Test {
       owned_.push_back(std::make_unique<Phy>(config_, listeners_[node], &scheduler_, node));
       phys_.push_back(owned_.back().get());
     }
-    far_ = std::make_unique<FarSignals>(scheduler_, phys_, sensing_mw(config_));
+    far_ = std::make_unique<FarSignals>(scheduler_, phys_, sensing_threshold_mw(config_));
     for (NodeId node = 0; node < kNodes; ++node)
       phys_[node]->set_far_signal_source(far_.get(), node);
   }

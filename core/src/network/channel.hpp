@@ -50,6 +50,7 @@
 #include "network/network_settings.hpp"
 #include "network/phy.hpp"
 #include "network/propagation_chain.hpp"
+#include "network/radio_thresholds.hpp"
 #include "network/scheduler.hpp"
 #include "swarmnet/packet.hpp"
 #include "swarmnet/spatial_grid.hpp"
@@ -113,17 +114,18 @@ class Channel final : public QuietSignalSource {
     SimTime sent{};
     SimTime duration{};
     std::shared_ptr<const ChannelLinks>
-        step_links;                            // the transmitter's links of the step, if reused
-    ChannelLinks own_links;                    // this frame's links otherwise (capacity kept)
-    const std::vector<Link>* links = nullptr;  // whichever of the two this frame uses
-    std::uint64_t first_sequence = 0;          // link i's signal starts with first_sequence + 2 i
-    std::size_t next_start = 0;  // each stream's next link that is not far (or the end)
+        step_links;                          // the transmitter's links of the step, if reused
+    ChannelLinks own_links;                  // this frame's links otherwise (capacity kept)
+    const ChannelLinks* link_set = nullptr;  // whichever of the two this frame uses
+    std::uint64_t first_sequence = 0;        // link i's signal starts with first_sequence + 2 i
+    std::size_t next_start = 0;  // each stream's next place in link_set->near (or its end)
     std::size_t next_end = 0;
 
     // When and with which reserved sequence number link i's start (kEnds false) or end runs.
     template <bool kEnds>
     [[nodiscard]] SimTime step_time(std::size_t i) const {
-      return kEnds ? sent + (*links)[i].delay + duration : sent + (*links)[i].delay;
+      const SimTime delay = link_set->links[i].delay;
+      return kEnds ? sent + delay + duration : sent + delay;
     }
     template <bool kEnds>
     [[nodiscard]] std::uint64_t step_sequence(std::size_t i) const {
@@ -140,8 +142,6 @@ class Channel final : public QuietSignalSource {
   // Fills `links` with the receivers that get `transmitter`'s frame `uid` as events, in arrival
   // order.
   void compute_links(NodeId transmitter, std::uint64_t uid, ChannelLinks& links) const;
-  // The first link at or after `i` that is not far (links.size() if none).
-  static std::size_t next_near(const std::vector<Link>& links, std::size_t i);
   std::uint32_t acquire_fanout();
   void release_fanout(std::uint32_t fanout);
   // Schedules the next step of one stream of a frame's fan-out: its receivers' signal starts
@@ -161,9 +161,17 @@ class Channel final : public QuietSignalSource {
   bool has_quiet_signals_;
   bool cache_links_;  // the chain gives a link the same power for every frame
   bool far_lazy_;     // far signals go to FarSignals, not to events (network.channel.far_signals)
-  PhyConfig phy_config_;
+  FarSignalTest is_far_;
   std::vector<Phy*> phys_;
-  mutable std::vector<std::uint32_t> link_of_receiver_;  // compute_links' scratch
+  // compute_links' scratch.
+  struct ArrivalKey {
+    SimTime delay;
+    NodeId receiver;
+    std::uint32_t link;
+  };
+  mutable std::vector<std::uint32_t> link_of_receiver_;
+  mutable std::vector<ArrivalKey> arrival_keys_;
+  mutable std::vector<Link> sorted_links_;
   std::vector<Vec2> positions_;
   std::shared_ptr<const std::vector<Vec2>> positions_snapshot_;  // made at the step's first frame
   std::deque<OnAir> on_air_;                                     // by time sent

@@ -53,12 +53,11 @@ void FarSignals::frame_sent(std::uint64_t uid, SimTime duration, std::uint64_t f
   longest_duration_ = std::max(longest_duration_, duration);
   AirFrame frame{
       uid, now, duration, now + reach + duration, first_sequence, std::move(links), next_number_++};
-  for (const auto& [receiver, index] : frame.links->far_by_receiver) {
-    const ChannelLink& link = frame.links->links[index];
-    Receiver& r = receivers_[receiver];
-    r.pending_units += link.far_units;
-    if (!r.hot && r.pending_units >= hot_units_) begin_events(receiver);  // this one follows
-    if (r.hot) link.phy->far_signal_event(signal_of(frame, index));
+  for (const FarLink& far : frame.links->far_by_receiver) {
+    Receiver& r = receivers_[far.receiver];
+    r.pending_units += far.units;
+    if (!r.hot && r.pending_units >= hot_units_) begin_events(far.receiver);  // this one follows
+    if (r.hot) frame.links->links[far.link].phy->far_signal_event(signal_of(frame, far.link));
   }
   frames_.push_back(std::move(frame));
 }
@@ -69,10 +68,10 @@ void FarSignals::retire(SimTime now) {
     AirFrame& frame = frames_[i];
     if (!frame.counted || frame.last_end >= now) continue;
     frame.counted = false;
-    for (const auto& [receiver, index] : frame.links->far_by_receiver) {
-      Receiver& r = receivers_[receiver];
-      r.pending_units -= frame.links->links[index].far_units;
-      if (r.hot && r.pending_units < hot_units_) end_events(receiver);
+    for (const FarLink& far : frame.links->far_by_receiver) {
+      Receiver& r = receivers_[far.receiver];
+      r.pending_units -= far.units;
+      if (r.hot && r.pending_units < hot_units_) end_events(far.receiver);
     }
   }
   while (counted_from_ < frames_.size() && !frames_[counted_from_].counted) ++counted_from_;

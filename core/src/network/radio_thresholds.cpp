@@ -18,11 +18,18 @@ double audibility_threshold_dbm(const PhyConfig& config) {
   return config.rx_sensitivity_dbm;
 }
 
+double sensing_threshold_mw(const PhyConfig& config) {
+  return std::min(dbm_to_milliwatts(config.cca_threshold_dbm),
+                  dbm_to_milliwatts(config.energy_detection_dbm));
+}
+
+FarSignalTest::FarSignalTest(const PhyConfig& config)
+    : sinr_(config.model == PhyModel::sinr),
+      cca_threshold_dbm_(config.cca_threshold_dbm),
+      sensing_mw_(sensing_threshold_mw(config)) {}
+
 bool is_far_signal(const PhyConfig& config, double rx_power_dbm, double rx_power_mw) {
-  if (config.model != PhyModel::sinr) return false;
-  const double sensing_mw = std::min(dbm_to_milliwatts(config.cca_threshold_dbm),
-                                     dbm_to_milliwatts(config.energy_detection_dbm));
-  return rx_power_dbm < config.cca_threshold_dbm && rx_power_mw < sensing_mw;
+  return FarSignalTest(config)(rx_power_dbm, rx_power_mw);
 }
 
 double event_threshold_dbm(const PhyConfig& config) {
