@@ -206,10 +206,10 @@ TEST(AodvProtocol, RerrFromABrokenLinkReachesEveryPrecursorUpstream) {
   }
   for (NodeId n = 0; n <= 3; ++n) {
     EXPECT_EQ(net.valid_route(n, 4), nullptr) << n;
-    const auto& entries = net.aodv(n).routing_table().entries();
-    ASSERT_TRUE(entries.contains(4));
-    EXPECT_EQ(entries.at(4).state, RouteState::invalid);
-    EXPECT_EQ(entries.at(4).seq, seq + 1) << n;  // incremented where the link broke
+    const RouteEntry* to_4 = net.aodv(n).routing_table().entry(4);
+    ASSERT_NE(to_4, nullptr);
+    EXPECT_EQ(to_4->state, RouteState::invalid);
+    EXPECT_EQ(to_4->seq, seq + 1) << n;  // incremented where the link broke
   }
   // Routes that did not use the broken link survive.
   EXPECT_NE(net.valid_route(3, 0), nullptr);
@@ -254,7 +254,9 @@ StaleReplyOutcome reply_after_a_break(TestNetwork& net) {
   net.send(0, 2, 2);
   net.run_for(s(0.1));
   EXPECT_EQ(net.valid_route(0, 2), nullptr);
-  out.seq_after_break = net.aodv(0).routing_table().entries().at(2).seq;
+  const RouteEntry* to_2 = net.aodv(0).routing_table().entry(2);
+  EXPECT_NE(to_2, nullptr);
+  out.seq_after_break = to_2 == nullptr ? 0 : to_2->seq;
   net.send(0, 2, 3);
   net.run_for(s(0.5));
   out.stale_replies = net.count(3, "control_rrep");

@@ -149,10 +149,9 @@ std::uint64_t TestNetwork::count(const std::string& counter) const {
 }
 
 const RouteEntry* TestNetwork::valid_route(NodeId node, NodeId destination) const {
-  const auto& entries = nodes_[node]->aodv->routing_table().entries();
-  const auto it = entries.find(destination);
-  if (it == entries.end() || !it->second.is_valid() || it->second.expires < now()) return nullptr;
-  return &it->second;
+  const RouteEntry* route = nodes_[node]->aodv->routing_table().entry(destination);
+  if (route == nullptr || !route->is_valid() || route->expires < now()) return nullptr;
+  return route;
 }
 
 std::string TestNetwork::find_loop() const {

@@ -1,6 +1,8 @@
 #include "routing_table.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace swarmnet::aodv {
 
@@ -45,13 +47,13 @@ bool RoutingTable::age(RouteEntry& entry, SimTime now) const {
 }
 
 RouteEntry* RoutingTable::find(NodeId destination, SimTime now) {
-  const auto it = entries_.find(destination);
-  if (it == entries_.end()) return nullptr;
-  if (!age(it->second, now)) {
-    entries_.erase(it);
+  RouteEntry* entry = stored(destination);
+  if (entry == nullptr) return nullptr;
+  if (!age(*entry, now)) {
+    remove(destination);
     return nullptr;
   }
-  return &it->second;
+  return entry;
 }
 
 RouteEntry* RoutingTable::find_valid(NodeId destination, SimTime now) {
@@ -59,12 +61,45 @@ RouteEntry* RoutingTable::find_valid(NodeId destination, SimTime now) {
   return entry != nullptr && entry->is_valid() ? entry : nullptr;
 }
 
-RouteEntry& RoutingTable::insert(RouteEntry entry) {
-  const NodeId destination = entry.destination;
-  return entries_.insert_or_assign(destination, std::move(entry)).first->second;
+const RouteEntry* RoutingTable::entry(NodeId destination) const {
+  const std::uint32_t slot = slot_of(destination);
+  return slot == 0 ? nullptr : &slots_[slot - 1];
 }
 
-bool RoutingTable::erase(NodeId destination) { return entries_.erase(destination) > 0; }
+RouteEntry& RoutingTable::insert(RouteEntry entry) {
+  const NodeId destination = entry.destination;
+  if (destination >= kNoNode) {
+    throw std::logic_error("AODV: a route to node id " + std::to_string(destination));
+  }
+  if (RouteEntry* existing = stored(destination)) return *existing = std::move(entry);
+  if (destination >= slot_of_.size()) slot_of_.resize(destination + std::size_t{1}, 0);
+  std::uint32_t slot = 0;
+  if (free_slots_.empty()) {
+    slot = static_cast<std::uint32_t>(slots_.size());
+    slots_.push_back(std::move(entry));
+  } else {
+    slot = free_slots_.back();
+    free_slots_.pop_back();
+    slots_[slot] = std::move(entry);
+  }
+  slot_of_[destination] = slot + 1;
+  ++size_;
+  return slots_[slot];
+}
+
+bool RoutingTable::erase(NodeId destination) {
+  if (stored(destination) == nullptr) return false;
+  remove(destination);
+  return true;
+}
+
+void RoutingTable::remove(NodeId destination) {
+  const std::uint32_t slot = slot_of_[destination] - 1;
+  slots_[slot] = RouteEntry{};  // destination kNoNode: free
+  slot_of_[destination] = 0;
+  free_slots_.push_back(slot);
+  --size_;
+}
 
 void RoutingTable::invalidate(RouteEntry& entry, SimTime now) const {
   if (entry.state != RouteState::valid) return;
@@ -94,9 +129,12 @@ std::vector<UnreachableDestination> RoutingTable::list_via(NodeId next_hop, SimT
                                                            bool valid_only) {
   purge(now);
   std::vector<UnreachableDestination> out;
-  for (const auto& [destination, entry] : entries_) {
-    if (entry.next_hop != next_hop || (valid_only && !entry.is_valid())) continue;
-    out.push_back({destination, entry.seq});
+  for (const RouteEntry& entry : slots_) {
+    if (entry.destination == kNoNode || entry.next_hop != next_hop ||
+        (valid_only && !entry.is_valid())) {
+      continue;
+    }
+    out.push_back({entry.destination, entry.seq});
   }
   std::sort(out.begin(), out.end(),
             [](const UnreachableDestination& a, const UnreachableDestination& b) {
@@ -106,8 +144,8 @@ std::vector<UnreachableDestination> RoutingTable::list_via(NodeId next_hop, SimT
 }
 
 void RoutingTable::purge(SimTime now) {
-  for (auto it = entries_.begin(); it != entries_.end();) {
-    it = age(it->second, now) ? std::next(it) : entries_.erase(it);
+  for (RouteEntry& entry : slots_) {
+    if (entry.destination != kNoNode && !age(entry, now)) remove(entry.destination);
   }
   std::erase_if(blacklist_, [now](const auto& item) { return item.second < now; });
 }

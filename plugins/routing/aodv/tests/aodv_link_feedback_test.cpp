@@ -38,10 +38,9 @@ class AodvLinkFeedback : public AodvOneNode {
     hear(rreq, neighbor);
   }
   [[nodiscard]] bool valid(NodeId destination) const {
-    const auto& entries = aodv_->routing_table().entries();
-    const auto it = entries.find(destination);
-    return it != entries.end() && it->second.state == RouteState::valid &&
-           it->second.expires >= scheduler_.now();
+    const RouteEntry* route = aodv_->routing_table().entry(destination);
+    return route != nullptr && route->state == RouteState::valid &&
+           route->expires >= scheduler_.now();
   }
   static Packet data_to(NodeId destination) {
     return PacketBuilder().uid(500).from(0).to(destination).message(1).payload_bytes(50).build();

@@ -160,9 +160,7 @@ class AodvNs3ControlRules : public AodvOneNode {
     return uids;
   }
   [[nodiscard]] const RouteEntry* route(NodeId destination) const {
-    const auto& entries = aodv_->routing_table().entries();
-    const auto it = entries.find(destination);
-    return it == entries.end() ? nullptr : &it->second;
+    return aodv_->routing_table().entry(destination);
   }
 };
 

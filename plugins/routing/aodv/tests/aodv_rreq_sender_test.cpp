@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 #include "aodv_one_node.hpp"
 
@@ -38,7 +40,9 @@ class AodvRreqSender : public AodvOneNode {
     hear(rreq, from);
   }
   [[nodiscard]] const RouteEntry& route(NodeId destination) const {
-    return aodv_->routing_table().entries().at(destination);
+    const RouteEntry* entry = aodv_->routing_table().entry(destination);
+    if (entry == nullptr) throw std::out_of_range("no route to " + std::to_string(destination));
+    return *entry;
   }
   // RREPs this node unicast to `next_hop` so far.
   [[nodiscard]] std::size_t replies_to(NodeId next_hop) const {

@@ -2,6 +2,9 @@
 // sequence numbers and parameters.
 #include <gtest/gtest.h>
 
+#include <iterator>
+#include <map>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -12,6 +15,7 @@
 #include "request_queue.hpp"
 #include "routing_table.hpp"
 #include "sequence_number.hpp"
+#include "swarmnet/random.hpp"
 
 namespace swarmnet::aodv {
 namespace {
@@ -92,6 +96,85 @@ TEST(AodvRoutingTable, ListsValidDestinationsThroughANextHop) {
   ASSERT_EQ(via.size(), 2U);
   EXPECT_EQ(via[0], (UnreachableDestination{3, 4}));
   EXPECT_EQ(via[1], (UnreachableDestination{7, 10}));
+}
+
+TEST(AodvRoutingTable, AnEntrysAddressSurvivesOtherInsertsAndRemovals) {
+  RoutingTable table(s(15));
+  for (NodeId d = 0; d < 3000; ++d) table.insert(route(d, 1, 2, d, s(d % 2 == 0 ? 1 : 100)));
+  const RouteEntry* kept = table.find(3, s(0));
+  ASSERT_NE(kept, nullptr);
+  table.purge(s(2));   // the even destinations' routes become invalid
+  table.purge(s(20));  // and are deleted, delete_period later
+  EXPECT_EQ(table.size(), 1500U);
+  EXPECT_EQ(table.entry(2), nullptr);
+  // Reuses the deleted entries' places, then grows.
+  for (NodeId d = 3000; d < 6000; ++d) table.insert(route(d, 1, 2, d, s(100)));
+  EXPECT_EQ(table.find(3, s(20)), kept);
+  EXPECT_EQ(kept->destination, 3U);
+  EXPECT_EQ(kept->seq, 3U);
+  EXPECT_EQ(table.size(), 4500U);
+  EXPECT_EQ(table.entry(5999)->seq, 5999U);
+}
+
+TEST(AodvRoutingTable, MatchesAMapOfRoutesUnderRandomInsertsFindsAndPurges) {
+  // A std::map with the same expiry rules as the reference: every lookup and size agree.
+  RoutingTable table(s(2));
+  std::map<NodeId, RouteEntry> model;
+  RandomStream random(42);
+  const auto age = [](RouteEntry& e, SimTime now) {  // RoutingTable::age, restated
+    if (e.expires >= now) return true;
+    if (e.state == RouteState::valid) {
+      e.state = RouteState::invalid;
+      e.rreq_count = 0;
+      e.expires = now + s(2);
+      if (e.valid_seq) ++e.seq;
+      return true;
+    }
+    return e.state != RouteState::invalid;
+  };
+  for (int step = 0; step < 20000; ++step) {
+    const SimTime now = s(step * 0.001);
+    const auto d = static_cast<NodeId>(random.below(300));
+    switch (random.below(4)) {
+      case 0: {
+        const RouteEntry e = route(d, static_cast<NodeId>(random.below(300)), 1,
+                                   static_cast<std::uint32_t>(step), now + s(random.uniform()));
+        table.insert(e);
+        model[d] = e;
+        break;
+      }
+      case 1: {
+        const RouteEntry* found = table.find(d, now);
+        const auto it = model.find(d);
+        if (it != model.end() && !age(it->second, now)) model.erase(it);
+        const auto again = model.find(d);
+        ASSERT_EQ(found == nullptr, again == model.end()) << step;
+        if (found != nullptr) {
+          ASSERT_EQ(found->seq, again->second.seq) << step;
+          ASSERT_EQ(found->state, again->second.state) << step;
+        }
+        break;
+      }
+      case 2:
+        ASSERT_EQ(table.erase(d), model.erase(d) == 1) << step;
+        break;
+      default:
+        table.purge(now);
+        for (auto it = model.begin(); it != model.end();) {
+          it = age(it->second, now) ? std::next(it) : model.erase(it);
+        }
+        break;
+    }
+    ASSERT_EQ(table.size(), model.size()) << step;
+  }
+}
+
+TEST(AodvRoutingTable, ARouteToNoNodeIsRefused) {
+  RoutingTable table(s(15));
+  EXPECT_THROW(table.insert(route(kNoNode, 1, 1, 1, s(1))), std::logic_error);
+  EXPECT_THROW(table.insert(route(kBroadcast, 1, 1, 1, s(1))), std::logic_error);
+  EXPECT_EQ(table.size(), 0U);
+  EXPECT_EQ(table.entry(kNoNode), nullptr);
 }
 
 TEST(AodvRoutingTable, PrecursorsAreAUniqueSortedSet) {
