@@ -152,6 +152,25 @@ TEST(FarSignalIndex, AnEmptyOrNearOnlyLinkSetHasNoFarLink) {
   }
 }
 
+TEST(FarSignalIndex, NearListsEveryLinkThatIsNotFarInArrivalOrder) {
+  // The fan-out's streams walk `near`: each link that is not far, once, in link order.
+  RandomStream random(11);
+  ChannelLinks set;
+  for (const std::uint32_t nodes : {1U, 2U, 64U, 200U}) {
+    for (int round = 0; round < 30; ++round) {
+      random_links(random, nodes, set);
+      set.index_near();
+      std::vector<std::uint32_t> expected;
+      for (std::uint32_t i = 0; i < set.links.size(); ++i) {
+        if (!set.links[i].far) expected.push_back(i);
+      }
+      ASSERT_EQ(set.near, expected) << nodes << " nodes, round " << round;
+    }
+  }
+  set.clear();
+  EXPECT_TRUE(set.near.empty());
+}
+
 // ---------------------------------------------------------------------------------------------
 // FarSignals against a brute-force scan
 
