@@ -83,7 +83,6 @@ RouteEntry& RoutingTable::insert(RouteEntry entry) {
     slots_[slot] = std::move(entry);
   }
   slot_of_[destination] = slot + 1;
-  ++size_;
   return slots_[slot];
 }
 
@@ -98,7 +97,6 @@ void RoutingTable::remove(NodeId destination) {
   slots_[slot] = RouteEntry{};  // destination kNoNode: free
   slot_of_[destination] = 0;
   free_slots_.push_back(slot);
-  --size_;
 }
 
 void RoutingTable::invalidate(RouteEntry& entry, SimTime now) const {

@@ -81,7 +81,7 @@ class RoutingTable {
 
   // The entry for `destination` as stored, without applying expiry, or null (inspection).
   [[nodiscard]] const RouteEntry* entry(NodeId destination) const;
-  [[nodiscard]] std::size_t size() const { return size_; }
+  [[nodiscard]] std::size_t size() const { return slots_.size() - free_slots_.size(); }
   [[nodiscard]] SimTime delete_period() const { return delete_period_; }
 
  private:
@@ -111,7 +111,6 @@ class RoutingTable {
   std::vector<std::uint32_t> slot_of_;  // by destination: 1 + its slot, or 0 for none
   std::deque<RouteEntry> slots_;        // a free slot's destination is kNoNode
   std::vector<std::uint32_t> free_slots_;
-  std::size_t size_ = 0;
   std::map<NodeId, SimTime> blacklist_;
 };
 
