@@ -411,8 +411,10 @@ void SinrReception::rebuild_interference(Lock& lock) {
   }
   const auto by_start = [](const Known& a, const Known& b) { return a.start < b.start; };
   std::sort(active.begin(), active.end(), by_start);
-  std::stable_sort(changes.begin(), changes.end(),
-                   [](const Change& a, const Change& b) { return a.key < b.key; });
+  // Changes at one key are one start or end recorded twice (as it ran, and from the source) with
+  // equal fields: their order among themselves does not matter, and std::sort allocates nothing.
+  std::sort(changes.begin(), changes.end(),
+            [](const Change& a, const Change& b) { return a.key < b.key; });
   const auto interference = [&] {
     double total = 0.0;  // in arrival order, as one list of arrivals would sum
     for (const Known& a : active) total += a.power_mw;

@@ -61,9 +61,6 @@ class SinrReception final : public PhyCore {
   // The arrivals' total power with the far signals `far` (not handed over) among them, summed in
   // arrival order as one list of arrivals would be.
   [[nodiscard]] double total_mw_with(std::vector<FarSignal>& far) const;
-  // With a far-signal source: records an arrival's start or end during a reception (the
-  // interference steps are rebuilt at its end, when the far signals are known).
-
   void leave_window();  // every arrival's in_window cleared
   // An arrival as the steps' rebuild sees it.
   struct Known {
