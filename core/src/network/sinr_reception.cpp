@@ -502,16 +502,23 @@ void SinrReception::finish_lock(const Frame& frame, double rx_power_dbm) {
   const SimTime now = scheduler_->now();
   if (far_source_ != nullptr) rebuild_interference(lock);
   add_quiet_interference(lock, now);
-  const double p_success = success_probability(lock, frame, now, true);
-  RandomStream draw(derive_seed(seed_, {frame.uid}));
-  const double draw_value = draw.uniform();
-  const bool received = draw_value < p_success;
   // SINR reported to the MAC: over the worst chunk.
   double worst_interference = 0.0;
   for (const auto& chunk : lock.interference_mw) {
     worst_interference = std::max(worst_interference, chunk.second);
   }
-  const double sinr_db = 10.0 * std::log10(lock.power_mw / (noise_mw_ + worst_interference));
+  const double worst_sinr = lock.power_mw / (noise_mw_ + worst_interference);
+  // Every chunk's SINR is at least the worst one's (the same division, rounding is monotonic):
+  // from both modes' certain-success SINR on, every chunk's success rate is exactly 1, and so is
+  // their product. Most receptions are here, and need not walk their chunks.
+  const ofdm::Mode payload_mode = ofdm::mode_at_most(frame.bitrate_bps);
+  const bool certain = worst_sinr >= certain_success_sinr(ofdm::kModes[0]) &&
+                       worst_sinr >= certain_success_sinr(payload_mode);
+  const double p_success = certain ? 1.0 : success_probability(lock, frame, now, true);
+  RandomStream draw(derive_seed(seed_, {frame.uid}));
+  const double draw_value = draw.uniform();  // below 1: a certain reception is received
+  const bool received = draw_value < p_success;
+  const double sinr_db = 10.0 * std::log10(worst_sinr);
   const bool collision = !received && worst_interference > 0.0 &&
                          success_probability(lock, frame, now, false) >= kCollisionAloneSuccess;
   // ns-3.37 reports a reception error (RxEndError, after which the MAC uses EIFS) only when the
