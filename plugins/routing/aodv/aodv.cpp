@@ -32,11 +32,12 @@ SimTime whole_ms_up_to(RandomStream& random, SimTime largest) {
   return std::chrono::milliseconds(random.below(static_cast<std::uint64_t>(slots)));
 }
 
-// Whether every node a message can make a route to is one of the network's 0..node_count-1. The
-// route table is indexed by node id, so a corrupt header naming another id is refused rather
-// than stored. A RREQ may ask for any destination (it becomes a route only once answered, by a
-// node that exists); its originator gets a reverse route, a RREP's destination a forward one.
-bool routes_to_known_nodes(const Message& message, std::size_t node_count) {
+// Whether a message names only nodes of the network (0..node_count-1) where it must. The route
+// table is indexed by node id, so a corrupt header naming another id is refused rather than
+// stored: a RREQ's originator gets a reverse route and a RREP's destination a forward one; a
+// RREP's originator is the node that asked for it. A RREQ may ask for any destination (it
+// becomes a route only once answered, by a node that exists).
+bool names_known_nodes(const Message& message, std::size_t node_count) {
   if (const auto* rreq = std::get_if<Rreq>(&message)) return rreq->originator < node_count;
   if (const auto* rrep = std::get_if<Rrep>(&message)) {
     return rrep->destination < node_count && rrep->originator < node_count;
@@ -118,9 +119,10 @@ PluginInfo Aodv::info() {
       "RREQ's reserved byte carries its TTL. Counters (routing.*): control_rreq, control_rrep, "
       "control_rerr, control_rrep_ack, control_hello (transmissions, originated or relayed), "
       "route_discoveries, link_failures (MAC reports received), link_breaks (breaks that "
-      "invalidated a route), blacklisted, local_repairs, duplicates, malformed (headers that do "
-      "not decode, or would make a route to a node outside the network), rrep_ttl_drops "
-      "(with rrep_ip_ttl). "
+      "invalidated a route), blacklisted, local_repairs, duplicates, malformed (control "
+      "messages that do not decode, or that name a node outside the network as a RREQ's "
+      "originator, a RREP's destination or originator, or their datagram's source), "
+      "rrep_ttl_drops (with rrep_ip_ttl). "
       "Departures from ns-3, all from RFC 3561 and each a parameter with ns-3.37's reading: "
       "every route update follows section 6.2 (ns-3 overwrites reverse routes unconditionally: "
       "rreq_overwrites_reverse_route; it makes a neighbour's route forget its sequence number: "
@@ -208,7 +210,9 @@ void Aodv::receive(Packet packet, NodeId from) {
     return;
   }
   std::optional<Message> message = decode(packet.header);
-  if (!message || !routes_to_known_nodes(*message, context_->node_count())) {
+  // The datagram's source becomes a route too (the sender, with control_via_route_to_neighbor).
+  if (!message || !names_known_nodes(*message, context_->node_count()) ||
+      packet.source >= context_->node_count()) {
     context_->count("malformed");
     return;
   }
