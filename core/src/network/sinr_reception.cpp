@@ -510,7 +510,8 @@ void SinrReception::finish_lock(const Frame& frame, double rx_power_dbm) {
   const double worst_sinr = lock.power_mw / (noise_mw_ + worst_interference);
   // Every chunk's SINR is at least the worst one's (the same division, rounding is monotonic):
   // from both modes' certain-success SINR on, every chunk's success rate is exactly 1, and so is
-  // their product. Most receptions are here, and need not walk their chunks.
+  // their product: such a reception need not walk its chunks. (Few are, where far signals add
+  // up: docs/performance.md.)
   const ofdm::Mode payload_mode = ofdm::mode_at_most(frame.bitrate_bps);
   const bool certain = worst_sinr >= certain_success_sinr(ofdm::kModes[0]) &&
                        worst_sinr >= certain_success_sinr(payload_mode);
