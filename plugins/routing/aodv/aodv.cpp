@@ -162,6 +162,7 @@ Aodv::Aodv(const PluginArgs& args)
 void Aodv::attach(RoutingContext& context) {
   context_ = &context;
   self_ = context.node();
+  table_.set_node_count(context.node_count());
   if (params_.enable_hello) {
     context_->schedule(whole_ms_up_to(random_, params_.hello_start_jitter_max),
                        [this] { hello_timer_expired(); });

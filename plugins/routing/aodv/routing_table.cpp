@@ -68,8 +68,11 @@ const RouteEntry* RoutingTable::entry(NodeId destination) const {
 
 RouteEntry& RoutingTable::insert(RouteEntry entry) {
   const NodeId destination = entry.destination;
-  if (destination >= kNoNode) {
-    throw std::logic_error("AODV: a route to node id " + std::to_string(destination));
+  if (destination >= node_count_) {
+    throw std::logic_error(
+        "AODV: a route to node id " + std::to_string(destination) +
+        (node_count_ < kNoNode ? ", outside the network's " + std::to_string(node_count_) + " nodes"
+                               : std::string{}));
   }
   if (RouteEntry* existing = stored(destination)) return *existing = std::move(entry);
   if (destination >= slot_of_.size()) slot_of_.resize(destination + std::size_t{1}, 0);

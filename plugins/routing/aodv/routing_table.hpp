@@ -50,12 +50,17 @@ class RoutingTable {
   explicit RoutingTable(SimTime delete_period, bool increment_seq_on_expiry = true)
       : delete_period_(delete_period), increment_seq_on_expiry_(increment_seq_on_expiry) {}
 
+  // Bounds the destinations to the network's nodes 0..node_count-1 (the table is indexed by node
+  // id: an unbounded id would size it to gigabytes). Until set, any id below kNoNode is taken.
+  void set_node_count(std::size_t node_count) { node_count_ = node_count; }
+
   // The entry for `destination` after expiry at `now`, or null.
   RouteEntry* find(NodeId destination, SimTime now);
   // As find(), but only a valid route.
   RouteEntry* find_valid(NodeId destination, SimTime now);
 
   // Inserts `entry`, replacing any entry for the same destination; returns the stored entry.
+  // A destination outside the network (or kNoNode, kBroadcast) throws std::logic_error.
   RouteEntry& insert(RouteEntry entry);
   bool erase(NodeId destination);
 
@@ -111,6 +116,7 @@ class RoutingTable {
   std::vector<std::uint32_t> slot_of_;  // by destination: 1 + its slot, or 0 for none
   std::deque<RouteEntry> slots_;        // a free slot's destination is kNoNode
   std::vector<std::uint32_t> free_slots_;
+  std::size_t node_count_ = kNoNode;
   std::map<NodeId, SimTime> blacklist_;
 };
 

@@ -177,6 +177,17 @@ TEST(AodvRoutingTable, ARouteToNoNodeIsRefused) {
   EXPECT_EQ(table.entry(kNoNode), nullptr);
 }
 
+TEST(AodvRoutingTable, ARouteOutsideTheNetworkIsRefused) {
+  RoutingTable table(s(15));
+  table.set_node_count(10);
+  EXPECT_THROW(table.insert(route(10, 1, 1, 1, s(1))), std::logic_error);
+  EXPECT_THROW(table.insert(route(4'000'000'000U, 1, 1, 1, s(1))), std::logic_error);
+  EXPECT_EQ(table.size(), 0U);
+  table.insert(route(9, 1, 1, 1, s(1)));
+  EXPECT_EQ(table.size(), 1U);
+  EXPECT_EQ(table.entry(10), nullptr);
+}
+
 TEST(AodvRoutingTable, PrecursorsAreAUniqueSortedSet) {
   RouteEntry e;
   EXPECT_TRUE(e.insert_precursor(5));
