@@ -153,6 +153,8 @@ TEST(Ns3Engine, WhatNs3CannotRunIsRefusedBeforeTheRunWithWhereAndWhy) {
        "the threshold model has no ns-3 counterpart"},
       {"network.phy.sensing_floor_db=-20", "--set network.phy.sensing_floor_db",
        "has no ns-3 counterpart"},
+      {"network.phy.header_failure_cca=ns3", "--set network.phy.header_failure_cca",
+       "has no ns-3 counterpart"},
       {"network.channel.cutoff=false", "--set network.channel.cutoff", "has no ns-3 counterpart"},
       {"network.channel.far_signals=events", "--set network.channel.far_signals",
        "has no ns-3 counterpart"},

@@ -127,6 +127,7 @@ TEST(ScenarioLoader, OptionalKeysTakeTheirDocumentedDefaults) {
   EXPECT_EQ(s.network.phy.rx_sensitivity_dbm, -96.0);
   EXPECT_TRUE(s.network.channel.cutoff);
   EXPECT_TRUE(s.network.channel.lazy_far_signals);
+  EXPECT_EQ(s.network.phy.header_failure_cca, HeaderFailureCca::sensed);
   EXPECT_EQ(s.network.mac.name, "ideal_mac");
   EXPECT_EQ(s.network.mac.params.real("bitrate_bps"), 6.0e6);
   EXPECT_EQ(s.network.routing.params.integer("ttl"), 32);
@@ -135,6 +136,19 @@ TEST(ScenarioLoader, OptionalKeysTakeTheirDocumentedDefaults) {
   EXPECT_TRUE(s.output.mobility_trace);
   EXPECT_EQ(s.output.mobility_interval_s, 0.0);
   EXPECT_TRUE(s.output.traffic_schedule);
+}
+
+TEST(ScenarioLoader, HeaderFailureCcaIsReadAndCheckedAgainstItsChoices) {
+  EXPECT_EQ(load_with(kFull, {"network.phy.header_failure_cca=ns3"}).network.phy.header_failure_cca,
+            HeaderFailureCca::ns3);
+  try {
+    (void)load_with(kFull, {"network.phy.header_failure_cca=ns-3"});
+    FAIL() << "an unknown choice was accepted";
+  } catch (const ScenarioError& error) {
+    const std::string text = error.what();
+    EXPECT_NE(text.find("network.phy.header_failure_cca"), std::string::npos) << text;
+    EXPECT_NE(text.find("ns3"), std::string::npos) << text;
+  }
 }
 
 // A controller entry's port (swarmnet/controller.hpp) is its index unless the scenario gives one;

@@ -118,6 +118,79 @@ TEST(WirelessSinrPhy, AFrameLostInItsHeaderIsNoReceptionError) {
   EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "collision 1", "idle"}));
 }
 
+// network.phy.header_failure_cca: ns3. ns-3.37's MAC counts the medium idle from a failed
+// header's end when a signal joined during the preamble (after detection) and none during the
+// header, until the next signal's detection window ends (network/sinr_reception.hpp).
+PhyConfig ns3_header_config() {
+  PhyConfig config = sinr_config();
+  config.header_failure_cca = HeaderFailureCca::ns3;
+  return config;
+}
+
+// Frame 1 detected at 14 us; frame 2, 5 dB stronger, joins in its preamble (18 us) and destroys
+// its header (26-30 us).
+void header_destroyed_from_the_preamble(Scheduler& scheduler, Phy& phy) {
+  arrive(scheduler, phy, 1, -75.0, us(10));
+  arrive(scheduler, phy, 2, -70.0, us(18));
+}
+
+TEST(WirelessSinrPhy, Ns3HeaderFailureTellsTheMacTheMediumIsIdleUntilTheNextSignal) {
+  Scheduler scheduler;
+  RecordingListener listener;
+  Phy phy(ns3_header_config(), listener, &scheduler, 1);
+  header_destroyed_from_the_preamble(scheduler, phy);
+  arrive(scheduler, phy, 3, -95.0, us(600));  // too weak to detect or sense: any signal will do
+  scheduler.run_until(us(29));
+  EXPECT_TRUE(phy.medium_busy());  // the header is still being received
+  scheduler.run_until(us(31));
+  EXPECT_FALSE(phy.medium_busy());  // both frames on the air, at -69 dBm together
+  EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "idle"}));
+  scheduler.run_until(us(603));
+  EXPECT_FALSE(phy.medium_busy());  // signal 3 is in its detection window
+  scheduler.run_until(us(605));
+  EXPECT_TRUE(phy.medium_busy());  // its window's end: what the PHY senses again
+  scheduler.run_until(us(10000));
+  // The reception's outcome is the same as with `sensed` (next test): frame 1 lost, no EIFS.
+  EXPECT_EQ(listener.log,
+            (std::vector<std::string>{"busy", "idle", "busy", "collision 1", "idle"}));
+}
+
+TEST(WirelessSinrPhy, SensedHeaderFailureKeepsTheMediumBusy) {
+  Scheduler scheduler;
+  RecordingListener listener;
+  Phy phy(sinr_config(), listener, &scheduler, 1);
+  header_destroyed_from_the_preamble(scheduler, phy);
+  scheduler.run_until(us(31));
+  EXPECT_TRUE(phy.medium_busy());
+  scheduler.run_until(us(10000));
+  EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "collision 1", "idle"}));
+}
+
+TEST(WirelessSinrPhy, Ns3HeaderFailureKeepsTheMediumBusyWhenASignalJoinsDuringTheHeader) {
+  // ns-3 notifies its MAC again when a signal arrives during the L-SIG.
+  Scheduler scheduler;
+  RecordingListener listener;
+  Phy phy(ns3_header_config(), listener, &scheduler, 1);
+  header_destroyed_from_the_preamble(scheduler, phy);
+  arrive(scheduler, phy, 3, -95.0, us(27));
+  scheduler.run_until(us(31));
+  EXPECT_TRUE(phy.medium_busy());
+  scheduler.run_until(us(10000));
+  EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "collision 1", "idle"}));
+}
+
+TEST(WirelessSinrPhy, Ns3HeaderRuleLeavesAReceivedFrameAlone) {
+  Scheduler scheduler;
+  RecordingListener listener;
+  Phy phy(ns3_header_config(), listener, &scheduler, 1);
+  arrive(scheduler, phy, 1, -60.0, us(10));
+  arrive(scheduler, phy, 2, -90.0, us(18));  // joins the preamble, harmless
+  scheduler.run_until(us(31));
+  EXPECT_TRUE(phy.medium_busy());
+  scheduler.run_until(us(10000));
+  EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "idle", "rx 1"}));
+}
+
 TEST(WirelessSinrPhy, WeakInterferenceIsTolerated) {
   Scheduler scheduler;
   RecordingListener listener;

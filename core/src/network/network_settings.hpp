@@ -17,6 +17,11 @@ namespace swarmnet {
 
 enum class PhyModel : std::uint8_t { threshold, sinr };
 
+// What the MAC is told after a frame's PLCP header (L-SIG) fails (sinr model;
+// network.phy.header_failure_cca): `sensed` keeps carrier sense on the signals; `ns3` tells it
+// what ns-3.37 does (network/sinr_reception.hpp, "After a header failure").
+enum class HeaderFailureCca : std::uint8_t { sensed, ns3 };
+
 // The radio of every node (network/phy.hpp describes both reception models). Defaults of the
 // sinr model's keys are ns-3.37's YansWifiPhy defaults for 802.11a.
 struct PhyConfig {
@@ -33,6 +38,7 @@ struct PhyConfig {
   double interference_floor_db = -10.0;  // signals below noise floor + this are ignored
   // Signals below cca_threshold + this are quiet (not carrier-sensed); the default makes none.
   double sensing_floor_db = -100.0;
+  HeaderFailureCca header_failure_cca = HeaderFailureCca::sensed;
 };
 
 // Which simulator is the network half (DESIGN.md section 3): SwarmNet's own, or ns-3.37 in a

@@ -33,10 +33,12 @@ SinrReception::SinrReception(const PhyConfig& config, PhyListener& listener, Sch
       noise_mw_(dbm_to_milliwatts(noise_floor_dbm(config))),
       energy_detection_mw_(dbm_to_milliwatts(config.energy_detection_dbm)),
       cca_threshold_mw_(dbm_to_milliwatts(config.cca_threshold_dbm)),
+      ns3_header_rule_(config.header_failure_cca == HeaderFailureCca::ns3),
       config_(config),
       seed_(seed) {}
 
 bool SinrReception::senses_busy() const {
+  if (mac_told_idle_) return false;  // header_failure_cca ns3, until the next signal is sensed
   if (lock_) return true;
   // ns-3.37 (PhyEntity::SwitchMaybeToCcaBusy): once a preamble is dropped or not detected, CCA is
   // busy while the sum of all arriving signals reaches the CCA threshold; a signal still in its
@@ -54,6 +56,11 @@ bool SinrReception::senses_power(double sensed_mw) const {
 
 void SinrReception::transmission_started() {
   lock_.reset();  // half duplex: the frame being received is lost
+  if (header_timer_ != kNoTimer) scheduler_->cancel(header_timer_);
+  header_timer_ = kNoTimer;
+  if (resume_sensing_timer_ != kNoTimer) scheduler_->cancel(resume_sensing_timer_);
+  resume_sensing_timer_ = kNoTimer;
+  mac_told_idle_ = false;
   close_window();
 }
 
@@ -72,6 +79,20 @@ void SinrReception::signal_start(std::uint64_t frame_uid, double rx_power_dbm, d
   close_passed_window();
   const SimTime now = scheduler_->now();
   arrivals_.push_back(Arrival{frame_uid, rx_power_dbm, rx_power_mw, now, start_sequence});
+  if (ns3_header_rule_) {
+    if (lock_) {
+      const SimTime header_start = lock_->start + ofdm::kPreambleDuration;
+      if (now < header_start) {
+        joined_in_preamble_ = true;
+      } else if (now < header_start + ofdm::kHeaderDuration) {
+        joined_in_header_ = true;
+      }
+    }
+    if (mac_told_idle_ && resume_sensing_timer_ == kNoTimer) {
+      resume_sensing_timer_ =
+          scheduler_->schedule_in(kDetectionWindow, [this] { resume_sensing_after_window(); });
+    }
+  }
   if (lock_) {
     if (far_source_ != nullptr) {
       note_change(true, Known{EventKey{now, start_sequence}, rx_power_mw, frame_uid});
@@ -111,6 +132,10 @@ void SinrReception::set_quiet_signal_source(const QuietSignalSource* source, Nod
 }
 
 void SinrReception::set_far_signal_source(FarSignalSource* source, NodeId self) {
+  // The header-failure rule counts every signal's arrival, so it needs them all as events.
+  if (ns3_header_rule_) {
+    throw std::logic_error("PHY: header_failure_cca ns3 needs every signal as an event");
+  }
   far_source_ = source;
   self_ = self;
 }
@@ -352,6 +377,13 @@ void SinrReception::detect_preamble() {
   lock_->changes.clear();
   lock_->far.clear();
   lock_->interference_mw.emplace_back(scheduler_->now(), std::max(interference, 0.0));
+  if (ns3_header_rule_) {
+    joined_in_preamble_ = false;
+    joined_in_header_ = false;
+    const SimTime header_end = lock_->start + ofdm::kPreambleDuration + ofdm::kHeaderDuration;
+    header_timer_ =
+        scheduler_->schedule_in(header_end - scheduler_->now(), [this] { judge_header(); });
+  }
   if (far_source_ != nullptr) {
     lock_->detected = scheduler_->current_key();
     lock_->far = far_scratch_;  // the far signals arriving at detection
@@ -470,10 +502,10 @@ void SinrReception::end_unlocked_signal(std::uint64_t frame_uid) {
   arm_window_if_needed(false);
 }
 
-double SinrReception::success_probability(const Lock& lock, const Frame& frame, SimTime end,
+double SinrReception::success_probability(const Lock& lock, double payload_bitrate_bps, SimTime end,
                                           bool with_interference) const {
   const ofdm::Mode header_mode = ofdm::kModes[0];
-  const ofdm::Mode payload_mode = ofdm::mode_at_most(frame.bitrate_bps);
+  const ofdm::Mode payload_mode = ofdm::mode_at_most(payload_bitrate_bps);
   const SimTime header_start = lock.start + ofdm::kPreambleDuration;
   const SimTime payload_start = header_start + ofdm::kHeaderDuration;
   const auto overlap_s = [](SimTime a0, SimTime a1, SimTime b0, SimTime b1) {
@@ -497,7 +529,38 @@ double SinrReception::success_probability(const Lock& lock, const Frame& frame, 
   return success;
 }
 
+void SinrReception::judge_header() {
+  header_timer_ = kNoTimer;
+  // ns-3's MAC is told the medium's state again unless a signal joined during the preamble and
+  // none during the header (the file's comment).
+  if (!joined_in_preamble_ || joined_in_header_) return;
+  const Lock& lock = *lock_;
+  const SimTime header_end = lock.start + ofdm::kPreambleDuration + ofdm::kHeaderDuration;
+  // The header's chunks as finish_lock will score them (its steps up to the header's end are
+  // final now); the payload's mode does not matter up to the header's end.
+  const Lock* scored = &lock;
+  if (quiet_source_ != nullptr) {
+    header_lock_ = lock;
+    add_quiet_interference(header_lock_, header_end);
+    scored = &header_lock_;
+  }
+  const double p_header = success_probability(*scored, ofdm::kModes[0].rate_bps, header_end, true);
+  // finish_lock's draw: the header fails here exactly when it finds it failed there.
+  RandomStream draw(derive_seed(seed_, {lock.frame_uid}));
+  if (draw.uniform() < p_header) return;
+  mac_told_idle_ = true;
+  report_busy_change();
+}
+
+void SinrReception::resume_sensing_after_window() {
+  resume_sensing_timer_ = kNoTimer;
+  mac_told_idle_ = false;
+  report_busy_change();
+}
+
 void SinrReception::finish_lock(const Frame& frame, double rx_power_dbm) {
+  if (header_timer_ != kNoTimer) scheduler_->cancel(header_timer_);  // a frame under 20 us
+  header_timer_ = kNoTimer;
   Lock& lock = *lock_;
   const SimTime now = scheduler_->now();
   if (far_source_ != nullptr) rebuild_interference(lock);
@@ -515,20 +578,22 @@ void SinrReception::finish_lock(const Frame& frame, double rx_power_dbm) {
   const ofdm::Mode payload_mode = ofdm::mode_at_most(frame.bitrate_bps);
   const bool certain = worst_sinr >= certain_success_sinr(ofdm::kModes[0]) &&
                        worst_sinr >= certain_success_sinr(payload_mode);
-  const double p_success = certain ? 1.0 : success_probability(lock, frame, now, true);
+  const double p_success = certain ? 1.0 : success_probability(lock, frame.bitrate_bps, now, true);
   RandomStream draw(derive_seed(seed_, {frame.uid}));
   const double draw_value = draw.uniform();  // below 1: a certain reception is received
   const bool received = draw_value < p_success;
   const double sinr_db = 10.0 * std::log10(worst_sinr);
-  const bool collision = !received && worst_interference > 0.0 &&
-                         success_probability(lock, frame, now, false) >= kCollisionAloneSuccess;
+  const bool collision =
+      !received && worst_interference > 0.0 &&
+      success_probability(lock, frame.bitrate_bps, now, false) >= kCollisionAloneSuccess;
   // ns-3.37 reports a reception error (RxEndError, after which the MAC uses EIFS) only when the
   // payload fails; a failed PLCP header aborts the reception during its CCA-busy phase, and the
   // MAC sees a busy medium only. The same draw decides: the header failed if it exceeds the
   // header's own success probability (which bounds the frame's).
   const SimTime header_end = lock.start + ofdm::kPreambleDuration + ofdm::kHeaderDuration;
   const bool header_received =
-      !received && draw_value < success_probability(lock, frame, std::min(header_end, now), true);
+      !received &&
+      draw_value < success_probability(lock, frame.bitrate_bps, std::min(header_end, now), true);
   // Decided: the lock's buffers are kept for the next one, before the listener runs.
   spare_lock_ = std::move(lock);
   lock_.reset();

@@ -2,6 +2,20 @@
 // YansWifiPhy does it with its defaults (preamble detection windows, no capture, chunked SINR
 // with the NIST error model, carrier sense on the summed power), with the far signals it is not
 // handed as events asked for when they matter (far_signals.hpp) and the opt-in quiet signals.
+//
+// After a header failure (network.phy.header_failure_cca: ns3). In ns-3.37 the MAC's view of the
+// medium is the last CCA-busy period the PHY notified, and a locked frame notifies its preamble's
+// rest and then its 4 us L-SIG as such periods. When the L-SIG fails, the PHY aborts and
+// notifies the MAC again only if the frame outlasts the CCA-busy end the PHY itself keeps (the
+// latest of all it notified). A signal that arrived during the preamble after detection set that
+// end to when the summed energy falls below the threshold, which the locked frame keeps busy at
+// least to its own end; a signal arriving during the L-SIG notifies the MAC again. So when a
+// signal joined during the preamble and none during the L-SIG, ns-3's MAC counts the medium idle
+// from the L-SIG's end while the frame is still on the air, and learns otherwise only when the
+// next signal arrives and its 4 us detection window ends. `ns3` tells the MAC that; the reception
+// itself goes on as with `sensed` (ns-3 aborts it: measured to change 0.1% of frames). It is an
+// approximation of the PHY's own CCA-busy end by those two conditions (docs/validation.md,
+// "Flooding: the saturated dense row").
 #pragma once
 
 #include <cstdint>
@@ -113,12 +127,18 @@ class SinrReception final : public PhyCore {
   void detect_preamble();
   void note_interference_change();
   void finish_lock(const Frame& frame, double rx_power_dbm);
+  // header_failure_cca ns3: at the locked frame's header end, decides the header with the draw
+  // finish_lock will use, and tells the MAC the medium is idle where ns-3's would count it so.
+  void judge_header();
+  // header_failure_cca ns3: a signal arrived while the MAC counts the medium idle; its detection
+  // window's end tells the MAC what the PHY senses.
+  void resume_sensing_after_window();
   // Total power of the quiet signals arriving now.
   [[nodiscard]] double quiet_mw_now();
   // The lock's interference steps with the quiet signals that overlapped it added in.
   void add_quiet_interference(Lock& lock, SimTime end);
-  [[nodiscard]] double success_probability(const Lock& lock, const Frame& frame, SimTime end,
-                                           bool with_interference) const;
+  [[nodiscard]] double success_probability(const Lock& lock, double payload_bitrate_bps,
+                                           SimTime end, bool with_interference) const;
 
   // Hot state first: for a signal that is not received (most of them) signal_start and
   // signal_end read only these first cache lines; the configuration and the reception-only state
@@ -135,6 +155,7 @@ class SinrReception final : public PhyCore {
   double noise_mw_;
   double energy_detection_mw_;
   double cca_threshold_mw_;
+  bool ns3_header_rule_;  // network.phy.header_failure_cca: ns3
   // Signals currently arriving, in arrival order: the far ones only when handed over as events.
   std::vector<Arrival> arrivals_;
   SimTime window_end_{};
@@ -142,6 +163,15 @@ class SinrReception final : public PhyCore {
   TimerId detection_timer_ = kNoTimer;  // the armed window's timer
   std::optional<Lock> lock_;
   Lock spare_lock_{};  // the last lock's buffers, reused by the next
+  // header_failure_cca ns3 (see the file's comment): a signal joined the lock during its preamble
+  // after detection, or during its header; and the MAC was told the medium is idle after a header
+  // failure (until the next signal's detection window ends, or the node transmits).
+  bool joined_in_preamble_ = false;
+  bool joined_in_header_ = false;
+  bool mac_told_idle_ = false;
+  TimerId header_timer_ = kNoTimer;
+  TimerId resume_sensing_timer_ = kNoTimer;
+  Lock header_lock_{};  // judge_header's copy of the lock, with quiet signals added
   // Colder state.
   PhyConfig config_;
   std::uint64_t seed_;

@@ -177,6 +177,11 @@ void check_phy(KeyFacts& keys) {
                   "20e6, 40e6, 80e6 or 160e6 with network.engine: ns3");
     }
   }
+  if (keys.text(phy / "header_failure_cca") == "ns3") {
+    keys.refuse(phy / "header_failure_cca",
+                "has no ns-3 counterpart (it makes SwarmNet's own PHY do what ns-3.37 does)",
+                "its default (sensed) with network.engine: ns3, where ns-3 does it anyway");
+  }
   if (keys.text(KeyPath({"network", "channel", "cutoff"})) == "false") {
     keys.refuse(KeyPath({"network", "channel", "cutoff"}),
                 "has no ns-3 counterpart (it tunes SwarmNet's own channel)",

@@ -146,6 +146,9 @@ Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>
   s.network.phy.preamble_snr_db = phy["preamble_snr_db"].as<double>();
   s.network.phy.interference_floor_db = phy["interference_floor_db"].as<double>();
   s.network.phy.sensing_floor_db = phy["sensing_floor_db"].as<double>();
+  s.network.phy.header_failure_cca = phy["header_failure_cca"].as<std::string>() == "ns3"
+                                         ? HeaderFailureCca::ns3
+                                         : HeaderFailureCca::sensed;
   s.network.channel.cutoff = network["channel"]["cutoff"].as<bool>();
   s.network.channel.lazy_far_signals =
       network["channel"]["far_signals"].as<std::string>() == "lazy";

@@ -220,6 +220,14 @@ const KeySpec& scenario_schema() {
                  "interfere but are not carrier-sensed, and cost nothing until a reception needs "
                  "them (faster). The default leaves no signal quiet (exact).")
             .between(-200, 0).defaults("-100"),
+        choice_key("header_failure_cca", {"sensed", "ns3"},
+                   "sinr model: what the MAC is told after a frame's PLCP header fails. sensed: "
+                   "carrier sense goes on (the frame keeps the medium busy); ns3: as ns-3.37, the "
+                   "MAC counts the medium idle from the header's end when a signal joined during "
+                   "the preamble and none during the header, until the next signal's detection "
+                   "window ends (docs/validation.md). ns3 hands every signal over as events "
+                   "(network.channel.far_signals has no effect).")
+            .defaults("sensed"),
       }),
       map_key("channel", "The shared medium.", {
         boolean_key("cutoff", "Visit only nodes that could possibly hear a frame (exact; turn off "
@@ -229,7 +237,8 @@ const KeySpec& scenario_schema() {
                    "receiver only when it can matter there (receiving, judging a preamble, or "
                    "when such signals could add up to the carrier-sense threshold); events hands "
                    "every signal over as events. Same results to the bit; lazy is faster "
-                   "(docs/performance.md). Fading models that draw per frame always use events.")
+                   "(docs/performance.md). Fading models that draw per frame, and "
+                   "network.phy.header_failure_cca: ns3, always use events.")
             .defaults("lazy"),
       }),
       plugin_key("mac", PluginKind::mac, "Medium access control.").plugin_default("ideal_mac"),
