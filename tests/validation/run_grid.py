@@ -106,6 +106,11 @@ def main():
     parser.add_argument("--resume", action="store_true",
                         help="read back every seed's pair that already ran to the end in OUT with "
                              "the same commands (its commands.json) instead of running it again")
+    parser.add_argument("--ns3-from", metavar="EARLIER_OUT",
+                        help="run only SwarmNet: take each pair's ns-3 result from an earlier "
+                             "grid's directory (same rows, seeds and ns-3 options), after checking "
+                             "that SwarmNet left the very same traces; for re-validating a change "
+                             "to SwarmNet's network half")
     parser.add_argument("--aligned", action="store_true",
                         help="the setup aligned before issue 19: no ARP frame on either side "
                              "(SwarmNet network.arp: static, the replay's --aligned) and AODV "
@@ -200,7 +205,8 @@ def main():
         started = time.monotonic()
         try:
             row = run_row(swarmnet, ns3, scenario, os.path.join(out, name), routing, stack,
-                          overrides, args.seeds, tolerances, args.aligned, args.resume)
+                          overrides, args.seeds, tolerances, args.aligned, args.resume,
+                          os.path.join(args.ns3_from, name) if args.ns3_from else None)
         except RuntimeError as error:
             print(f"  failed: {error}", flush=True)
             row = {"robots": robots, "routing": routing, "error": str(error), "pass": False}
@@ -279,14 +285,18 @@ def seed_list(text):
 
 
 def run_row(swarmnet, ns3, scenario, work_dir, routing, stack, overrides, seeds, tolerances,
-            aligned=False, resume=False):
+            aligned=False, resume=False, ns3_from=None):
     """One row: compare.compare()'s row for one seed; for several, the row of the pooled runs,
     with the range of the per-seed delivery differences and every seed's own row."""
     pairs = []
     for seed in seeds:
         seed_dir = work_dir if len(seeds) == 1 else os.path.join(work_dir, f"seed{seed}")
+        kept = None
+        if ns3_from:
+            kept = ns3_from if len(seeds) == 1 else os.path.join(ns3_from, f"seed{seed}")
         pairs.append(vr.run_pair(swarmnet, ns3, scenario, seed_dir, routing, stack, overrides,
-                                 seed, log=lambda s: None, aligned=aligned, resume=resume))
+                                 seed, log=lambda s: None, aligned=aligned, resume=resume,
+                                 ns3_from=kept))
     if len(pairs) == 1:
         return vr.compared(*pairs[0], routing, stack, tolerances, aligned)
     per_seed = [dict(vr.compared(*pair, routing, stack, tolerances, aligned), seed=seed)

@@ -1,9 +1,11 @@
 """Runs one validation case: a SwarmNet scenario, then ns-3 on its mobility trace and traffic
 schedule (swarmnet_ns3_replay), then compare.py's comparison. Shared by run_small_case.py and
 run_grid.py; Python standard library only."""
+import filecmp
 import json
 import math
 import os
+import shutil
 import subprocess
 import sys
 
@@ -132,10 +134,12 @@ def compared(summary, replay, routing, stack, tolerances=None, aligned=False):
 
 
 def run_pair(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), seed=1, log=print,
-             aligned=False, resume=False):
+             aligned=False, resume=False, ns3_from=None):
     """Runs SwarmNet, then ns-3 on its traces; returns (summary.json, the replay's JSON). With
     `resume`, a pair that WORK_DIR/commands.json says ran to the end with these very commands is
-    read back instead of run again."""
+    read back instead of run again. With `ns3_from` (the same pair's directory in an earlier
+    grid), ns-3 is not run again: its result is taken from there, which holds only if the replay's
+    options are the same and SwarmNet's new run left the very same traces (checked)."""
     run_dir = os.path.join(work_dir, "swarmnet")
     ns3_json = os.path.join(work_dir, "ns3.json")
     os.makedirs(work_dir, exist_ok=True)
@@ -152,11 +156,16 @@ def run_pair(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), se
     record = os.path.join(work_dir, "commands.json")
     planned = {"swarmnet": [str(c) for c in swarmnet_command],
                "ns3": [str(c) for c in ns3_command]}
+    if ns3_from:
+        planned["ns3_from"] = ns3_from
     if not (resume and _ran(record, planned)):
         if os.path.exists(record):
             os.remove(record)  # a pair half rerun is no longer the recorded one
         _run(swarmnet_command, os.path.join(work_dir, "swarmnet.out"), log)
-        _run(ns3_command, os.path.join(work_dir, "ns3.out"), log)
+        if ns3_from:
+            _reuse_ns3(ns3_from, ns3_command, run_dir, ns3_json)
+        else:
+            _run(ns3_command, os.path.join(work_dir, "ns3.out"), log)
         with open(record, "w", encoding="utf-8") as f:
             json.dump(planned, f, indent=1)
     with open(os.path.join(run_dir, "summary.json"), encoding="utf-8") as f:
@@ -164,6 +173,30 @@ def run_pair(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), se
     with open(ns3_json, encoding="utf-8") as f:
         replay = json.load(f)
     return summary, replay
+
+
+def _reuse_ns3(kept_dir, ns3_command, run_dir, ns3_json):
+    """Copies the ns-3 result of the pair kept in `kept_dir` to `ns3_json`, after checking that
+    it replayed the same traces with the same options (RuntimeError otherwise)."""
+    try:
+        with open(os.path.join(kept_dir, "commands.json"), encoding="utf-8") as f:
+            kept = json.load(f)["ns3"]
+    except (OSError, ValueError, KeyError) as error:
+        raise RuntimeError(f"{kept_dir}: no ns-3 run recorded to reuse ({error})") from error
+    kept_run_dir = kept[1]
+    # The same options: all but the replay's own path, the run directory and the output file.
+    def options(command, run, out):
+        return [c for c in command[1:] if c not in (run, out)]
+    if options(kept, kept_run_dir, kept[kept.index("-o") + 1]) != \
+            options(ns3_command, run_dir, ns3_json):
+        raise RuntimeError(f"{kept_dir}: its ns-3 run had other options: "
+                           f"{' '.join(kept[2:])}")
+    for name in ("mobility.ns2", "traffic.csv"):
+        if not filecmp.cmp(os.path.join(kept_run_dir, name), os.path.join(run_dir, name),
+                           shallow=False):
+            raise RuntimeError(f"{run_dir}/{name} differs from {kept_run_dir}/{name}: the "
+                               f"traces changed, so ns-3 must run again")
+    shutil.copyfile(os.path.join(kept_dir, "ns3.json"), ns3_json)
 
 
 def _ran(record, planned):
