@@ -155,6 +155,24 @@ TEST(WirelessSinrPhy, Ns3HeaderFailureTellsTheMacTheMediumIsIdleUntilTheNextSign
             (std::vector<std::string>{"busy", "idle", "busy", "collision 1", "idle"}));
 }
 
+TEST(WirelessSinrPhy, Ns3HeaderFailureAbortsTheReceptionSoALaterFrameIsReceived) {
+  // ns-3.37 aborts a reception whose L-SIG failed; with `sensed` the PHY stays locked on it.
+  for (const bool ns3 : {true, false}) {
+    Scheduler scheduler;
+    RecordingListener listener;
+    Phy phy(ns3 ? ns3_header_config() : sinr_config(), listener, &scheduler, 1);
+    header_destroyed_from_the_preamble(scheduler, phy);
+    arrive(scheduler, phy, 3, -50.0, us(200));  // 19 dB over frames 1 and 2 together
+    scheduler.run_until(us(10000));
+    if (ns3) {
+      EXPECT_EQ(listener.log,
+                (std::vector<std::string>{"busy", "idle", "busy", "collision 1", "idle", "rx 3"}));
+    } else {
+      EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "collision 1", "idle"}));
+    }
+  }
+}
+
 TEST(WirelessSinrPhy, SensedHeaderFailureKeepsTheMediumBusy) {
   Scheduler scheduler;
   RecordingListener listener;

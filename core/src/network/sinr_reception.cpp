@@ -111,6 +111,7 @@ void SinrReception::signal_start(std::uint64_t frame_uid, double rx_power_dbm, d
 }
 
 void SinrReception::signal_end(const Frame& frame, double rx_power_dbm) {
+  if (aborted_ && aborted_->frame_uid == frame.uid) report_aborted_collision(frame);
   if (!lock_ || lock_->frame_uid != frame.uid) {
     end_unlocked_signal(frame.uid);
     return;
@@ -531,10 +532,7 @@ double SinrReception::success_probability(const Lock& lock, double payload_bitra
 
 void SinrReception::judge_header() {
   header_timer_ = kNoTimer;
-  // ns-3's MAC is told the medium's state again unless a signal joined during the preamble and
-  // none during the header (the file's comment).
-  if (!joined_in_preamble_ || joined_in_header_) return;
-  const Lock& lock = *lock_;
+  Lock& lock = *lock_;
   const SimTime header_end = lock.start + ofdm::kPreambleDuration + ofdm::kHeaderDuration;
   // The header's chunks as finish_lock will score them (its steps up to the header's end are
   // final now); the payload's mode does not matter up to the header's end.
@@ -548,8 +546,33 @@ void SinrReception::judge_header() {
   // finish_lock's draw: the header fails here exactly when it finds it failed there.
   RandomStream draw(derive_seed(seed_, {lock.frame_uid}));
   if (draw.uniform() < p_header) return;
-  mac_told_idle_ = true;
+  // ns-3 aborts the reception: a later preamble can be detected, and the frame is one more signal
+  // on the air. Whether it was a collision is told at its end, as finish_lock would.
+  double worst_interference = 0.0;
+  for (const auto& chunk : lock.interference_mw) {
+    worst_interference = std::max(worst_interference, chunk.second);
+  }
+  aborted_ = AbortedReception{lock.frame_uid, lock.power_mw, lock.start, scheduler_->now(),
+                              worst_interference > 0.0};
+  spare_lock_ = std::move(lock);
+  lock_.reset();
+  // ns-3's MAC is told the medium's state again unless a signal joined during the preamble and
+  // none during the header (the file's comment).
+  mac_told_idle_ = joined_in_preamble_ && !joined_in_header_;
   report_busy_change();
+}
+
+void SinrReception::report_aborted_collision(const Frame& frame) {
+  // finish_lock's test: a frame lost to interference that alone it would have survived.
+  Lock& alone = header_lock_;
+  alone.power_mw = aborted_->power_mw;
+  alone.start = aborted_->start;
+  alone.interference_mw.assign(1, {aborted_->judged, 0.0});
+  const bool collision = aborted_->interfered &&
+                         success_probability(alone, frame.bitrate_bps, scheduler_->now(), false) >=
+                             kCollisionAloneSuccess;
+  aborted_.reset();
+  if (collision) listener_.phy_collision(frame);
 }
 
 void SinrReception::resume_sensing_after_window() {

@@ -12,10 +12,11 @@
 // least to its own end; a signal arriving during the L-SIG notifies the MAC again. So when a
 // signal joined during the preamble and none during the L-SIG, ns-3's MAC counts the medium idle
 // from the L-SIG's end while the frame is still on the air, and learns otherwise only when the
-// next signal arrives and its 4 us detection window ends. `ns3` tells the MAC that; the reception
-// itself goes on as with `sensed` (ns-3 aborts it: measured to change 0.1% of frames). It is an
-// approximation of the PHY's own CCA-busy end by those two conditions (docs/validation.md,
-// "Flooding: the saturated dense row").
+// next signal arrives and its 4 us detection window ends. `ns3` does what ns-3 does at a failed
+// header: the reception is aborted at the header's end (a later preamble can be detected; no
+// reception error, so no EIFS), and the MAC is told the medium is idle under those two
+// conditions, which approximate the PHY's own CCA-busy end (docs/validation.md, "Flooding: the
+// saturated dense row").
 #pragma once
 
 #include <cstdint>
@@ -128,11 +129,15 @@ class SinrReception final : public PhyCore {
   void note_interference_change();
   void finish_lock(const Frame& frame, double rx_power_dbm);
   // header_failure_cca ns3: at the locked frame's header end, decides the header with the draw
-  // finish_lock will use, and tells the MAC the medium is idle where ns-3's would count it so.
+  // finish_lock would use; a failed one aborts the reception, and the MAC is told the medium is
+  // idle where ns-3's would count it so.
   void judge_header();
   // header_failure_cca ns3: a signal arrived while the MAC counts the medium idle; its detection
   // window's end tells the MAC what the PHY senses.
   void resume_sensing_after_window();
+  // header_failure_cca ns3: the aborted reception's frame ended; tells the listener if it was a
+  // collision, as finish_lock does for a reception that went to the end.
+  void report_aborted_collision(const Frame& frame);
   // Total power of the quiet signals arriving now.
   [[nodiscard]] double quiet_mw_now();
   // The lock's interference steps with the quiet signals that overlapped it added in.
@@ -172,6 +177,15 @@ class SinrReception final : public PhyCore {
   TimerId header_timer_ = kNoTimer;
   TimerId resume_sensing_timer_ = kNoTimer;
   Lock header_lock_{};  // judge_header's copy of the lock, with quiet signals added
+  // The reception judge_header aborted, until its frame ends (its collision is told then).
+  struct AbortedReception {
+    std::uint64_t frame_uid = 0;
+    double power_mw = 0.0;
+    SimTime start{};
+    SimTime judged{};
+    bool interfered = false;
+  };
+  std::optional<AbortedReception> aborted_;
   // Colder state.
   PhyConfig config_;
   std::uint64_t seed_;

@@ -223,10 +223,11 @@ const KeySpec& scenario_schema() {
         choice_key("header_failure_cca", {"sensed", "ns3"},
                    "sinr model: what the MAC is told after a frame's PLCP header fails. sensed: "
                    "carrier sense goes on (the frame keeps the medium busy); ns3: as ns-3.37, the "
-                   "MAC counts the medium idle from the header's end when a signal joined during "
-                   "the preamble and none during the header, until the next signal's detection "
-                   "window ends (docs/validation.md). ns3 hands every signal over as events "
-                   "(network.channel.far_signals has no effect).")
+                   "reception is aborted at the header's end, and the MAC counts the medium idle "
+                   "from there when a signal joined during the preamble and none during the "
+                   "header, until the next signal's detection window ends (docs/validation.md). "
+                   "ns3 hands every signal over as events (network.channel.far_signals has no "
+                   "effect).")
             .defaults("sensed"),
       }),
       map_key("channel", "The shared medium.", {
