@@ -183,19 +183,33 @@ def _reuse_ns3(kept_dir, ns3_command, run_dir, ns3_json):
             kept = json.load(f)["ns3"]
     except (OSError, ValueError, KeyError) as error:
         raise RuntimeError(f"{kept_dir}: no ns-3 run recorded to reuse ({error})") from error
-    kept_run_dir = kept[1]
     # The same options: all but the replay's own path, the run directory and the output file.
     def options(command, run, out):
         return [c for c in command[1:] if c not in (run, out)]
-    if options(kept, kept_run_dir, kept[kept.index("-o") + 1]) != \
+    if options(kept, kept[1], kept[kept.index("-o") + 1]) != \
             options(ns3_command, run_dir, ns3_json):
         raise RuntimeError(f"{kept_dir}: its ns-3 run had other options: "
                            f"{' '.join(kept[2:])}")
-    for name in ("mobility.ns2", "traffic.csv"):
-        if not filecmp.cmp(os.path.join(kept_run_dir, name), os.path.join(run_dir, name),
-                           shallow=False):
-            raise RuntimeError(f"{run_dir}/{name} differs from {kept_run_dir}/{name}: the "
-                               f"traces changed, so ns-3 must run again")
+    # The same traces, read from the kept pair's own directory (the path recorded in its
+    # commands.json may be where this run now writes); the replay also takes its duration from
+    # summary.json.
+    kept_run_dir = os.path.join(kept_dir, "swarmnet")
+    try:
+        for name in ("mobility.ns2", "traffic.csv"):
+            if not filecmp.cmp(os.path.join(kept_run_dir, name), os.path.join(run_dir, name),
+                               shallow=False):
+                raise RuntimeError(f"{run_dir}/{name} differs from {kept_run_dir}/{name}: the "
+                                   f"traces changed, so ns-3 must run again")
+        durations = []
+        for directory in (kept_run_dir, run_dir):
+            with open(os.path.join(directory, "summary.json"), encoding="utf-8") as f:
+                durations.append(json.load(f)["sim_time_s"])
+    except (OSError, ValueError, KeyError) as error:
+        raise RuntimeError(f"{kept_dir}: cannot compare its traces with {run_dir}'s "
+                           f"({error})") from error
+    if durations[0] != durations[1]:
+        raise RuntimeError(f"{run_dir}: {durations[1]} simulated s, the kept run "
+                           f"{durations[0]}: the traces changed, so ns-3 must run again")
     shutil.copyfile(os.path.join(kept_dir, "ns3.json"), ns3_json)
 
 

@@ -173,6 +173,20 @@ TEST(WirelessSinrPhy, Ns3HeaderFailureAbortsTheReceptionSoALaterFrameIsReceived)
   }
 }
 
+TEST(WirelessSinrPhy, Ns3HeaderFailuresOfOverlappingFramesAreEachACollision) {
+  // Frame 1 is aborted at its header; frame 3, locked after it while 1 is still on the air, is
+  // aborted too. Each is told as a collision at its own end.
+  Scheduler scheduler;
+  RecordingListener listener;
+  Phy phy(ns3_header_config(), listener, &scheduler, 1);
+  header_destroyed_from_the_preamble(scheduler, phy);
+  arrive(scheduler, phy, 3, -60.0, us(100));  // 9 dB over frames 1 and 2: detected
+  arrive(scheduler, phy, 4, -55.0, us(108));  // joins 3's preamble, destroys its header
+  scheduler.run_until(us(10000));
+  EXPECT_EQ(listener.log, (std::vector<std::string>{"busy", "idle", "busy", "idle", "collision 1",
+                                                    "collision 3"}));
+}
+
 TEST(WirelessSinrPhy, SensedHeaderFailureKeepsTheMediumBusy) {
   Scheduler scheduler;
   RecordingListener listener;

@@ -111,7 +111,7 @@ void SinrReception::signal_start(std::uint64_t frame_uid, double rx_power_dbm, d
 }
 
 void SinrReception::signal_end(const Frame& frame, double rx_power_dbm) {
-  if (aborted_ && aborted_->frame_uid == frame.uid) report_aborted_collision(frame);
+  if (!aborted_.empty()) report_aborted_collision(frame);
   if (!lock_ || lock_->frame_uid != frame.uid) {
     end_unlocked_signal(frame.uid);
     return;
@@ -549,11 +549,12 @@ void SinrReception::judge_header() {
   // ns-3 aborts the reception: a later preamble can be detected, and the frame is one more signal
   // on the air. Whether it was a collision is told at its end, as finish_lock would.
   double worst_interference = 0.0;
-  for (const auto& chunk : lock.interference_mw) {
+  for (const auto& chunk : scored->interference_mw) {  // quiet signals count, as in finish_lock
     worst_interference = std::max(worst_interference, chunk.second);
   }
-  aborted_ = AbortedReception{lock.frame_uid, lock.power_mw, lock.start, scheduler_->now(),
-                              worst_interference > 0.0};
+  aborted_.push_back(AbortedReception{lock.frame_uid, lock.power_mw, lock.start,
+                                      lock.interference_mw.front().first,
+                                      worst_interference > 0.0});
   spare_lock_ = std::move(lock);
   lock_.reset();
   // ns-3's MAC is told the medium's state again unless a signal joined during the preamble and
@@ -563,15 +564,18 @@ void SinrReception::judge_header() {
 }
 
 void SinrReception::report_aborted_collision(const Frame& frame) {
+  const auto it = std::find_if(aborted_.begin(), aborted_.end(),
+                               [&](const AbortedReception& a) { return a.frame_uid == frame.uid; });
+  if (it == aborted_.end()) return;
   // finish_lock's test: a frame lost to interference that alone it would have survived.
   Lock& alone = header_lock_;
-  alone.power_mw = aborted_->power_mw;
-  alone.start = aborted_->start;
-  alone.interference_mw.assign(1, {aborted_->judged, 0.0});
-  const bool collision = aborted_->interfered &&
-                         success_probability(alone, frame.bitrate_bps, scheduler_->now(), false) >=
-                             kCollisionAloneSuccess;
-  aborted_.reset();
+  alone.power_mw = it->power_mw;
+  alone.start = it->start;
+  alone.interference_mw.assign(1, {it->first_step, 0.0});
+  const bool collision =
+      it->interfered && success_probability(alone, frame.bitrate_bps, scheduler_->now(), false) >=
+                            kCollisionAloneSuccess;
+  aborted_.erase(it);
   if (collision) listener_.phy_collision(frame);
 }
 

@@ -177,15 +177,16 @@ class SinrReception final : public PhyCore {
   TimerId header_timer_ = kNoTimer;
   TimerId resume_sensing_timer_ = kNoTimer;
   Lock header_lock_{};  // judge_header's copy of the lock, with quiet signals added
-  // The reception judge_header aborted, until its frame ends (its collision is told then).
+  // The receptions judge_header aborted whose frames are still on the air (their collisions are
+  // told at their ends; another frame may be locked and aborted meanwhile).
   struct AbortedReception {
     std::uint64_t frame_uid = 0;
     double power_mw = 0.0;
     SimTime start{};
-    SimTime judged{};
+    SimTime first_step{};  // the lock's first interference step (its detection)
     bool interfered = false;
   };
-  std::optional<AbortedReception> aborted_;
+  std::vector<AbortedReception> aborted_;
   // Colder state.
   PhyConfig config_;
   std::uint64_t seed_;
