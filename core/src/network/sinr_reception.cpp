@@ -81,10 +81,9 @@ void SinrReception::signal_start(std::uint64_t frame_uid, double rx_power_dbm, d
   arrivals_.push_back(Arrival{frame_uid, rx_power_dbm, rx_power_mw, now, start_sequence});
   if (ns3_header_rule_) {
     if (lock_) {
-      const SimTime header_start = lock_->start + ofdm::kPreambleDuration;
-      if (now < header_start) {
+      if (now < lock_->header_start()) {
         joined_in_preamble_ = true;
-      } else if (now < header_start + ofdm::kHeaderDuration) {
+      } else if (now < lock_->header_end()) {
         joined_in_header_ = true;
       }
     }
@@ -381,9 +380,8 @@ void SinrReception::detect_preamble() {
   if (ns3_header_rule_) {
     joined_in_preamble_ = false;
     joined_in_header_ = false;
-    const SimTime header_end = lock_->start + ofdm::kPreambleDuration + ofdm::kHeaderDuration;
-    header_timer_ =
-        scheduler_->schedule_in(header_end - scheduler_->now(), [this] { judge_header(); });
+    header_timer_ = scheduler_->schedule_in(lock_->header_end() - scheduler_->now(),
+                                            [this] { judge_header(); });
   }
   if (far_source_ != nullptr) {
     lock_->detected = scheduler_->current_key();
@@ -507,8 +505,8 @@ double SinrReception::success_probability(const Lock& lock, double payload_bitra
                                           bool with_interference) const {
   const ofdm::Mode header_mode = ofdm::kModes[0];
   const ofdm::Mode payload_mode = ofdm::mode_at_most(payload_bitrate_bps);
-  const SimTime header_start = lock.start + ofdm::kPreambleDuration;
-  const SimTime payload_start = header_start + ofdm::kHeaderDuration;
+  const SimTime header_start = lock.header_start();
+  const SimTime payload_start = lock.header_end();
   const auto overlap_s = [](SimTime a0, SimTime a1, SimTime b0, SimTime b1) {
     const SimTime lo = std::max(a0, b0);
     const SimTime hi = std::min(a1, b1);
@@ -533,7 +531,7 @@ double SinrReception::success_probability(const Lock& lock, double payload_bitra
 void SinrReception::judge_header() {
   header_timer_ = kNoTimer;
   Lock& lock = *lock_;
-  const SimTime header_end = lock.start + ofdm::kPreambleDuration + ofdm::kHeaderDuration;
+  const SimTime header_end = lock.header_end();
   // The header's chunks as finish_lock will score them (its steps up to the header's end are
   // final now); the payload's mode does not matter up to the header's end.
   const Lock* scored = &lock;
@@ -548,13 +546,10 @@ void SinrReception::judge_header() {
   if (draw.uniform() < p_header) return;
   // ns-3 aborts the reception: a later preamble can be detected, and the frame is one more signal
   // on the air. Whether it was a collision is told at its end, as finish_lock would.
-  double worst_interference = 0.0;
-  for (const auto& chunk : scored->interference_mw) {  // quiet signals count, as in finish_lock
-    worst_interference = std::max(worst_interference, chunk.second);
-  }
+  // Quiet signals count in the worst interference, as in finish_lock.
   aborted_.push_back(AbortedReception{lock.frame_uid, lock.power_mw, lock.start,
                                       lock.interference_mw.front().first,
-                                      worst_interference > 0.0});
+                                      scored->worst_interference_mw() > 0.0});
   spare_lock_ = std::move(lock);
   lock_.reset();
   // ns-3's MAC is told the medium's state again unless a signal joined during the preamble and
@@ -593,10 +588,7 @@ void SinrReception::finish_lock(const Frame& frame, double rx_power_dbm) {
   if (far_source_ != nullptr) rebuild_interference(lock);
   add_quiet_interference(lock, now);
   // SINR reported to the MAC: over the worst chunk.
-  double worst_interference = 0.0;
-  for (const auto& chunk : lock.interference_mw) {
-    worst_interference = std::max(worst_interference, chunk.second);
-  }
+  const double worst_interference = lock.worst_interference_mw();
   const double worst_sinr = lock.power_mw / (noise_mw_ + worst_interference);
   // Every chunk's SINR is at least the worst one's (the same division, rounding is monotonic):
   // from both modes' certain-success SINR on, every chunk's success rate is exactly 1, and so is
@@ -617,7 +609,7 @@ void SinrReception::finish_lock(const Frame& frame, double rx_power_dbm) {
   // payload fails; a failed PLCP header aborts the reception during its CCA-busy phase, and the
   // MAC sees a busy medium only. The same draw decides: the header failed if it exceeds the
   // header's own success probability (which bounds the frame's).
-  const SimTime header_end = lock.start + ofdm::kPreambleDuration + ofdm::kHeaderDuration;
+  const SimTime header_end = lock.header_end();
   const bool header_received =
       !received &&
       draw_value < success_probability(lock, frame.bitrate_bps, std::min(header_end, now), true);

@@ -19,6 +19,7 @@
 // saturated dense row").
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <utility>
@@ -30,6 +31,7 @@
 #include "network/signal_sources.hpp"
 #include "swarmnet/ids.hpp"
 #include "swarmnet/packet.hpp"
+#include "swarmnet/wifi_ofdm.hpp"
 
 namespace swarmnet {
 
@@ -102,6 +104,16 @@ class SinrReception final : public PhyCore {
     // The far signals not handed over that arrived at detection, and those handed over since
     // (with their past).
     std::vector<FarSignal> far;
+
+    // Its PLCP header (L-SIG) lies between these, after the preamble.
+    [[nodiscard]] SimTime header_start() const { return start + ofdm::kPreambleDuration; }
+    [[nodiscard]] SimTime header_end() const { return header_start() + ofdm::kHeaderDuration; }
+    // The largest interference of its steps: the worst chunk's.
+    [[nodiscard]] double worst_interference_mw() const {
+      double worst = 0.0;
+      for (const auto& step : interference_mw) worst = std::max(worst, step.second);
+      return worst;
+    }
   };
   // With a far-signal source: records an arrival's start or end during a reception (the
   // interference steps are rebuilt at its end, when the far signals are known).
