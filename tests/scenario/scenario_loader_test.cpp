@@ -151,6 +151,25 @@ TEST(ScenarioLoader, HeaderFailureCcaIsReadAndCheckedAgainstItsChoices) {
   }
 }
 
+// network.seed seeds the network half alone; absent, the master seed does, and a negative one is
+// refused with its key named.
+TEST(ScenarioLoader, NetworkSeedSeedsTheNetworkHalfAndKeepsTheTrafficOnTheMasterSeed) {
+  const Scenario absent = load_with(kFull, {"seed=5"});
+  EXPECT_FALSE(absent.network.seed.has_value());
+  EXPECT_EQ(absent.network_settings().seed, 5u);
+  EXPECT_EQ(absent.network_settings().traffic_seed, 5u);
+  const Scenario given = load_with(kFull, {"seed=5", "network.seed=9"});
+  EXPECT_EQ(given.network_settings().seed, 9u);
+  EXPECT_EQ(given.network_settings().traffic_seed, 5u);
+  EXPECT_EQ(given.robot_settings().seed, 5u);
+  try {
+    (void)load_with(kFull, {"network.seed=-1"});
+    FAIL() << "a negative network seed was accepted";
+  } catch (const ScenarioError& error) {
+    EXPECT_NE(std::string(error.what()).find("network.seed"), std::string::npos) << error.what();
+  }
+}
+
 // A controller entry's port (swarmnet/controller.hpp) is its index unless the scenario gives one;
 // the resolved scenario states every port.
 TEST(ScenarioLoader, ControllerPortsDefaultToTheirIndexAndAreChecked) {

@@ -95,10 +95,16 @@ struct NetworkConfig {
   std::optional<ArpTimings> arp = ArpTimings{};
   NetworkEngineKind engine = NetworkEngineKind::native;
   Ns3Options ns3;
+  // network.seed: the network half's own streams (MAC, PHY draws, ARP, routing, fading); absent,
+  // the master seed. The traffic's injection instants stay on the master seed.
+  std::optional<std::uint64_t> seed;
 };
 
 struct NetworkSettings {
-  std::uint64_t seed = 1;   // master seed: every stream is derived from it (swarmnet/random.hpp)
+  std::uint64_t seed = 1;  // the network half's streams are derived from it (swarmnet/random.hpp)
+  // The master seed: it places each message's injection in its step (injection_offset), which
+  // is part of the traffic (traffic.csv), not of the network, so network.seed leaves it alone.
+  std::uint64_t traffic_seed = 1;
   double step_s = 0.1;      // the step window; at least 1 ns
   std::uint32_t nodes = 0;  // one per robot
   Arena arena;              // the channel's grid covers its rectangle

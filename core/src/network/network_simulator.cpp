@@ -36,7 +36,7 @@ SimTime checked_step(const NetworkSettings& settings) {
 
 NetworkSimulator::NetworkSimulator(const NetworkSettings& settings, PluginLoader& loader,
                                    std::ostream* packet_trace)
-    : seed_(settings.seed),
+    : traffic_seed_(settings.traffic_seed),
       step_(checked_step(settings)),
       trace_(packet_trace),
       channel_(settings, PropagationChain(settings, loader), scheduler_, settings.nodes),
@@ -109,7 +109,7 @@ void NetworkSimulator::run_step(const StepBatch& batch, StepResult& result) {
                                       message.port,
                                       std::make_shared<const Payload>(message.payload)};
     Routing& routing = nodes_[message.source]->routing();
-    scheduler_.schedule_at(batch.start + injection_offset(seed_, message.message_id, step_),
+    scheduler_.schedule_at(batch.start + injection_offset(traffic_seed_, message.message_id, step_),
                            [this, pending = std::move(pending), &routing] {
                              application_.inject(pending, scheduler_.now(), routing);
                            });

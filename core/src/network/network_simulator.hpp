@@ -68,7 +68,7 @@ class NetworkSimulator final : public NetworkEngine {
  private:
   void check_batch(const StepBatch& batch) const;
 
-  std::uint64_t seed_;
+  std::uint64_t traffic_seed_;  // places injections in their step (NetworkSettings)
   SimTime step_;
   // Declared first, destroyed last; the destructor clears it before the plugins go, so no
   // callback made by a plugin's code outlives the plugin's library.

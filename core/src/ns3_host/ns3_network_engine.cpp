@@ -24,7 +24,7 @@ std::vector<NamedCount> named_counts(const ns3engine::Counters& counters) {
 }  // namespace
 
 Ns3NetworkEngine::Ns3NetworkEngine(const NetworkSettings& settings)
-    : seed_(settings.seed),
+    : traffic_seed_(settings.traffic_seed),
       step_(from_seconds(settings.step_s)),
       nodes_(settings.nodes),
       network_(create_ns3_network(ns3_config_for(settings))) {}
@@ -61,7 +61,7 @@ void Ns3NetworkEngine::run_step(const StepBatch& batch, StepResult& result) {
   arrivals_.clear();
   self_arrivals_.clear();
   for (const auto& message : batch.messages) {
-    const SimTime at = batch.start + injection_offset(seed_, message.message_id, step_);
+    const SimTime at = batch.start + injection_offset(traffic_seed_, message.message_id, step_);
     const bool broadcast = message.destination == kBroadcast;
     metrics_.message_sent(broadcast);
     messages_[message.message_id] =

@@ -43,7 +43,7 @@ class Ns3NetworkEngine final : public NetworkEngine {
   void deliver(const ns3engine::Arrival& arrival, StepResult& result);
   void forget_before(SimTime horizon);
 
-  std::uint64_t seed_;
+  std::uint64_t traffic_seed_;  // places injections in their step (NetworkSettings)
   SimTime step_;
   std::uint32_t nodes_;
   SimTime next_start_{};

@@ -12,7 +12,8 @@ std::uint64_t Scenario::step_count() const {
 
 NetworkSettings Scenario::network_settings() const {
   NetworkSettings settings;
-  settings.seed = seed;
+  settings.seed = network.seed.value_or(seed);
+  settings.traffic_seed = seed;
   settings.step_s = step_s;
   settings.nodes = robots.count;
   settings.arena = arena;

@@ -155,6 +155,7 @@ Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>
   s.network.mac = plugin("network.mac");
   s.network.routing = plugin("network.routing");
   if (network["arp"].as<std::string>() == "static") s.network.arp.reset();
+  if (network["seed"]) s.network.seed = network["seed"].as<std::uint64_t>();
   s.network.engine = network["engine"].as<std::string>() == "ns3" ? NetworkEngineKind::ns3
                                                                   : NetworkEngineKind::native;
   const YAML::Node ns3 = network["ns3"];

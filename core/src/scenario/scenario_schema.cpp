@@ -250,6 +250,11 @@ const KeySpec& scenario_schema() {
                  "docs/arp.md); static: every neighbour's address known before the run, no ARP "
                  "frame (the aligned setup of docs/validation.md).")
           .defaults("ns3"),
+      integer_key("seed", "Seed of the network half's own random streams (backoff, reception "
+                          "draws, ARP and routing jitter, fading). The traffic and the robots keep "
+                          "the master seed, so runs that differ only here replay the same "
+                          "mobility and messages over other channel realizations.")
+          .at_least(0).derived("the master seed"),
       choice_key("engine", {"native", "ns3"},
                  "Which simulator is the network half: SwarmNet's own (native) or ns-3.37 "
                  "(ns3: every key above mapped onto ns-3's models, docs/ns3-engine.md).")
