@@ -4,8 +4,9 @@ earlier run of the same pair, and refuses to when the replay would not have been
 
 Runs configs/validation/small.yaml (5 simulated s) once through SwarmNet and ns-3, then again
 with a SwarmNet-side option (network.phy.header_failure_cca: ns3) reusing ns-3's result: the
-result must be the earlier one, byte for byte. Then two reuses that must be refused: other
-ns-3 options (the aligned setup), and other traces (a shorter run, so other messages).
+result must be the earlier one, byte for byte; and with another network.seed, which re-draws the
+network half alone and so leaves the traces as they were. Then two reuses that must be refused:
+other ns-3 options (the aligned setup), and other traces (a shorter run, so other messages).
 """
 import argparse
 import filecmp
@@ -62,6 +63,10 @@ def main():
         failures.append("ns-3 ran although its result was reused")
     if "pdr" not in summary:
         failures.append("SwarmNet's run has no summary")
+    try:
+        pair("network-seed", SHORT + ["network.seed=1001"], ns3_from=kept)
+    except RuntimeError as error:
+        failures.append(f"a run with another network.seed could not reuse ns-3's result: {error}")
     if not refused(lambda: pair("aligned", SHORT, aligned=True, ns3_from=kept),
                    "its ns-3 run had other options"):
         failures.append("a reuse with other ns-3 options was not refused")
