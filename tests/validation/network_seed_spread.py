@@ -9,7 +9,7 @@ that difference that is SwarmNet's own run-to-run noise on fixed traces: a model
 moves a row by less than it has not been shown to move it. (ns-3's own noise is not in it: its
 side is one run per trace.)
 
-    python3 tests/validation/network_seed_spread.py \\
+    python3 tests/validation/network_seed_spread.py --swarmnet build/bin/swarmnet \\
         --model default=GRID_A,GRID_B,GRID_C --model rule=GRID_D,GRID_E,GRID_F
 
 Each GRID is a run_grid.py output directory (its results.json); the rows of the first grid of
@@ -17,9 +17,11 @@ the first model are reported, in its order. Writes a Markdown table to stdout (o
 non-zero, naming the file, if a results.json is missing or unreadable or lacks a row."""
 import argparse
 import json
-import math
 import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+from seed_interval import student_interval  # noqa: E402  (swarmnet stats: one implementation)
 
 # (results.json key, column heading, unit)
 METRICS = [("pdr_diff_points", "delivery (pts)", ""), ("delay_mean_diff_pct", "mean delay", "%"),
@@ -43,18 +45,16 @@ def read_rows(grid_dir):
     return path, {row["name"]: row for row in rows}
 
 
-def summary(values):
-    """'mean ± sd [min, max]' of the realizations' values; the sd is the sample standard
-    deviation (n - 1), left out for a single realization."""
-    mean = sum(values) / len(values)
-    text = f"{mean:+.1f}"
-    if len(values) > 1:
-        sd = math.sqrt(sum((v - mean) ** 2 for v in values) / (len(values) - 1))
-        text += f" ± {sd:.1f} [{min(values):+.1f}, {max(values):+.1f}]"
-    return text
+def summary(swarmnet, values):
+    """'mean ± sd [min, max]' of the realizations' values, the mean and sample sd from
+    `swarmnet stats`; a single realization is shown alone."""
+    stats = student_interval(swarmnet, values)
+    if stats is None:
+        return f"{values[0]:+.1f}"
+    return f"{stats['mean']:+.1f} ± {stats['sd']:.1f} [{min(values):+.1f}, {max(values):+.1f}]"
 
 
-def spread_table(models):
+def spread_table(swarmnet, models):
     """models: [(label, [(path, rows_by_name), ...]), ...] -> Markdown text."""
     first_rows = models[0][1][0][1]
     head = ["row", "model", "runs"] + [heading for _, heading, _ in METRICS]
@@ -69,7 +69,7 @@ def spread_table(models):
                         raise SystemExit(f"network_seed_spread: {path} has no row {name}")
                     if rows[name].get(key) is not None:
                         values.append(float(rows[name][key]))
-                cells.append(summary(values) + unit if values else "-")
+                cells.append(summary(swarmnet, values) + unit if values else "-")
             lines.append("| " + " | ".join(cells) + " |")
     return "\n".join(lines) + "\n"
 
@@ -79,11 +79,13 @@ def main(argv=None):
     parser.add_argument("--model", type=parse_model, action="append", required=True,
                         metavar="LABEL=DIR[,DIR...]",
                         help="a model's grid runs, one per network seed")
+    parser.add_argument("--swarmnet", default="swarmnet",
+                        help="the swarmnet command, whose `stats` computes the means and sds")
     parser.add_argument("--out", help="write the table here instead of stdout")
     args = parser.parse_args(argv)
     models = [(label, [read_rows(d) for d in dirs]) for label, dirs in args.model]
     table = ("Pooled difference to ns-3 (SwarmNet minus ns-3) over the runs of each model: mean ± "
-             "sample sd [min, max].\n\n" + spread_table(models))
+             "sample sd [min, max].\n\n" + spread_table(args.swarmnet, models))
     if args.out:
         with open(args.out, "w", encoding="utf-8") as f:
             f.write(table)

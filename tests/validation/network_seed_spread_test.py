@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """network_seed_spread.py on grids written here: each model's mean, sample sd and range per row
 and metric, a single run shown alone, and a grid lacking a row refused with its file named."""
+import argparse
 import json
 import os
 import subprocess
@@ -20,11 +21,19 @@ def grid(root, name, rows):
     return path
 
 
+SWARMNET = "swarmnet"
+
+
 def run(*args):
-    return subprocess.run([sys.executable, SCRIPT, *args], capture_output=True, text=True)
+    return subprocess.run([sys.executable, SCRIPT, "--swarmnet", SWARMNET, *args],
+                          capture_output=True, text=True)
 
 
 def main():
+    global SWARMNET
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--swarmnet", required=True, help="the swarmnet command")
+    SWARMNET = parser.parse_args().swarmnet
     failures = []
     with tempfile.TemporaryDirectory() as root:
         a = grid(root, "a", {"row-x": (1.0, -10.0, 2.0), "row-y": (0.0, 0.0, 0.0)})
