@@ -5,8 +5,10 @@ earlier run of the same pair, and refuses to when the replay would not have been
 Runs configs/validation/small.yaml (5 simulated s) once through SwarmNet and ns-3, then again
 with a SwarmNet-side option (network.phy.header_failure_cca: ns3) reusing ns-3's result: the
 result must be the earlier one, byte for byte; and with another network.seed, which re-draws the
-network half alone and so leaves the traces as they were. Then two reuses that must be refused:
-other ns-3 options (the aligned setup), and other traces (a shorter run, so other messages).
+network half alone and so leaves the traces as they were. Then three reuses that must be refused:
+other ns-3 options (the aligned setup), another ns-3 run number (run_grid.py --ns3-run), and
+other traces (a shorter run, so other messages). Last, a pair with another ns-3 run number runs
+ns-3 with it (its RngRun) on the very same traces.
 """
 import argparse
 import filecmp
@@ -70,6 +72,19 @@ def main():
     if not refused(lambda: pair("aligned", SHORT, aligned=True, ns3_from=kept),
                    "its ns-3 run had other options"):
         failures.append("a reuse with other ns-3 options was not refused")
+    if not refused(lambda: pair("ns3-run-reused", SHORT, ns3_from=kept, ns3_run=7),
+                   "its ns-3 run had other options"):
+        failures.append("a reuse with another ns-3 run number was not refused")
+    redrawn = os.path.join(args.work, "ns3-run")
+    pair("ns3-run", SHORT, ns3_run=7)
+    with open(os.path.join(redrawn, "commands.json"), encoding="utf-8") as f:
+        command = json.load(f)["ns3"]
+    if command[command.index("--seed") + 1] != "7":
+        failures.append(f"ns-3 did not run with the run number asked for: {command}")
+    for name in ("mobility.ns2", "traffic.csv"):
+        if not filecmp.cmp(os.path.join(kept, "swarmnet", name),
+                           os.path.join(redrawn, "swarmnet", name), shallow=False):
+            failures.append(f"another ns-3 run number changed SwarmNet's {name}")
     if not refused(lambda: pair("shorter", ["duration_s=4"], ns3_from=kept),
                    "the traces changed"):
         failures.append("a reuse with other traces was not refused")

@@ -5,7 +5,7 @@ time of both network halves measured on every row.
 
     python3 tests/validation/run_grid.py --build build [--full] [--duration-s 20]
         [--routing flooding,direct,aodv] [--seed 1 | --seeds 1-8] [--set KEY=VALUE ...]
-        [--aligned] [--extra-rows issue19] [--row N,SIDE_M,RATE_HZ,PAYLOAD_B,SENDERS ...]
+        [--ns3-run N] [--aligned] [--extra-rows issue19] [--row N,SIDE_M,RATE_HZ,PAYLOAD_B,SENDERS ...]
         [--extra-only] [--pdr-points P] [--delay-pct D] [--mac-pct M] [--control-pct C]
         [--out build/validation-grid] [--doc docs/validation.md]
 
@@ -111,6 +111,11 @@ def main():
                              "grid's directory (same rows, seeds and ns-3 options), after checking "
                              "that SwarmNet left the very same traces; for re-validating a change "
                              "to SwarmNet's network half")
+    parser.add_argument("--ns3-run", type=int, metavar="N",
+                        help="ns-3's run number (the replay's --seed, RngRun) for every trace; "
+                             "default: each trace's own seed. A grid with another run number "
+                             "re-draws ns-3's side over the very same traces (SwarmNet's side is "
+                             "unchanged): the spread over such grids is ns-3's own noise")
     parser.add_argument("--aligned", action="store_true",
                         help="the setup aligned before issue 19: no ARP frame on either side "
                              "(SwarmNet network.arp: static, the replay's --aligned) and AODV "
@@ -206,7 +211,8 @@ def main():
         try:
             row = run_row(swarmnet, ns3, scenario, os.path.join(out, name), routing, stack,
                           overrides, args.seeds, tolerances, args.aligned, args.resume,
-                          os.path.join(args.ns3_from, name) if args.ns3_from else None)
+                          os.path.join(args.ns3_from, name) if args.ns3_from else None,
+                          args.ns3_run)
         except RuntimeError as error:
             print(f"  failed: {error}", flush=True)
             row = {"robots": robots, "routing": routing, "error": str(error), "pass": False}
@@ -221,6 +227,7 @@ def main():
     meta = {"stack": stack, "setup": setup,
             "tolerances": dict(base_tolerances, control_pct=control_pct),
             "duration_s": args.duration_s, "seeds": args.seeds, "set": args.set,
+            "ns3_run": args.ns3_run,
             "machine": platform.machine(), "cpus": os.cpu_count(),
             "date": time.strftime("%Y-%m-%d")}
     with open(os.path.join(out, "results.json"), "w", encoding="utf-8") as f:
@@ -285,7 +292,7 @@ def seed_list(text):
 
 
 def run_row(swarmnet, ns3, scenario, work_dir, routing, stack, overrides, seeds, tolerances,
-            aligned=False, resume=False, ns3_from=None):
+            aligned=False, resume=False, ns3_from=None, ns3_run=None):
     """One row: compare.compare()'s row for one seed; for several, the row of the pooled runs,
     with the range of the per-seed delivery differences and every seed's own row."""
     pairs = []
@@ -296,7 +303,7 @@ def run_row(swarmnet, ns3, scenario, work_dir, routing, stack, overrides, seeds,
             kept = ns3_from if len(seeds) == 1 else os.path.join(ns3_from, f"seed{seed}")
         pairs.append(vr.run_pair(swarmnet, ns3, scenario, seed_dir, routing, stack, overrides,
                                  seed, log=lambda s: None, aligned=aligned, resume=resume,
-                                 ns3_from=kept))
+                                 ns3_from=kept, ns3_run=ns3_run))
     if len(pairs) == 1:
         return vr.compared(*pairs[0], routing, stack, tolerances, aligned)
     per_seed = [dict(vr.compared(*pair, routing, stack, tolerances, aligned), seed=seed)
@@ -323,6 +330,8 @@ def markdown_table(results, meta):
     stack = ("SwarmNet: log_distance + sinr PHY + dcf80211" if meta["stack"] == "80211" else
              "SwarmNet: 120 m disk + ideal_mac (its 802.11 stack was not available)")
     settings = "".join(f"`--set {o}`, " for o in meta.get("set", []))
+    if meta.get("ns3_run") is not None:
+        settings += f"ns-3 run number {meta['ns3_run']} on every trace, "
     # results.json from before issue 19 have no setup: those grids ran the aligned one.
     setup = meta.get("setup", "aligned")
     tolerances = meta.get("tolerances")

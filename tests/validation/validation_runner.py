@@ -134,8 +134,9 @@ def compared(summary, replay, routing, stack, tolerances=None, aligned=False):
 
 
 def run_pair(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), seed=1, log=print,
-             aligned=False, resume=False, ns3_from=None):
-    """Runs SwarmNet, then ns-3 on its traces; returns (summary.json, the replay's JSON). With
+             aligned=False, resume=False, ns3_from=None, ns3_run=None):
+    """Runs SwarmNet, then ns-3 on its traces; returns (summary.json, the replay's JSON). ns-3's
+    run number (RngRun) is `ns3_run`, or the trace's `seed` when None. With
     `resume`, a pair that WORK_DIR/commands.json says ran to the end with these very commands is
     read back instead of run again. With `ns3_from` (the same pair's directory in an earlier
     grid), ns-3 is not run again: its result is taken from there, which holds only if the replay's
@@ -148,7 +149,8 @@ def run_pair(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), se
     swarmnet_command += swarmnet_overrides(stack, routing, aligned)
     for override in overrides:
         swarmnet_command += ["--set", override]
-    ns3_command = [ns3, run_dir, "--routing", routing, "--seed", str(seed), "-o", ns3_json]
+    ns3_command = [ns3, run_dir, "--routing", routing,
+                   "--seed", str(seed if ns3_run is None else ns3_run), "-o", ns3_json]
     ns3_command += NS3_RADIO + replay_options(aligned)
     if routing == "flooding":
         ns3_command += ["--flooding-ttl", str(FLOODING["ttl"]),
