@@ -546,6 +546,39 @@ TEST_F(FarSignalsAtOneReceiver, FarSignalsBecomeEventsOnlyWhileTheyCouldReachThe
   EXPECT_EQ(log().size(), 4U);
 }
 
+TEST_F(FarSignalsAtOneReceiver, AHeldReceiverGetsEveryFarSignalAsEventsUntilReleased) {
+  // One far signal of -90 dBm is far from the threshold: not handed over.
+  send(us(10), -90.0, us(300));
+  EXPECT_FALSE(handed_over());
+  // Held (a PHY whose MAC counts the medium idle under header_failure_cca ns3): the one still
+  // arriving is handed over at once, and so is each one sent while the hold lasts.
+  far_->hold_far_events(0, true);
+  EXPECT_TRUE(handed_over());
+  scheduler_.run_until(us(400));
+  EXPECT_FALSE(handed_over());
+  send(us(500), -90.0, us(300));
+  EXPECT_TRUE(handed_over());
+  scheduler_.run_until(us(900));
+  // Still held after its frames retired: the bound is not what keeps it hot.
+  send(us(1000), -90.0, us(300));
+  EXPECT_TRUE(handed_over());
+  scheduler_.run_until(us(1400));
+  // Released below the threshold: cold again, and the source answers for what follows.
+  far_->hold_far_events(0, false);
+  send(us(1500), -90.0, us(300));
+  EXPECT_FALSE(handed_over());
+  std::vector<FarSignal> listed;
+  far_->far_starts(0, EventKey{us(1450), 0}, EventKey{us(1502), 0}, listed);
+  ASSERT_EQ(listed.size(), 1U) << describe(listed);
+  EXPECT_EQ(listed[0].frame_uid, 4U);
+  // Nothing a held receiver was handed is listed again (frames 2 and 3 went as events).
+  listed.clear();
+  far_->far_starts(0, EventKey{us(400), 0}, EventKey{us(1450), 0}, listed);
+  EXPECT_TRUE(listed.empty()) << describe(listed);
+  // Never sensed: one far signal at a time stays below the threshold, held or not.
+  EXPECT_TRUE(log().empty());
+}
+
 TEST_F(FarSignalsAtOneReceiver, ManyWeakFarSignalsTogetherMakeTheReceiverHot) {
   // Ten far signals of -92 dBm (-82 dBm together, less rounding) overlap: none alone is anywhere
   // near the threshold, the tenth takes the sum there.

@@ -36,10 +36,8 @@ Channel::Channel(const NetworkSettings& settings, PropagationChain chain, Schedu
       cache_links_(!chain_.varies_per_frame()),
       // Far signals are found again by their step's links, kept while frames may be asked about:
       // models that draw per frame would need every frame's links kept; they keep events.
-      // The ns-3 header-failure rule counts every arrival at a PHY: it keeps events too.
       far_lazy_(settings.network.channel.lazy_far_signals &&
-                settings.network.phy.model == PhyModel::sinr && cache_links_ &&
-                settings.network.phy.header_failure_cca == HeaderFailureCca::sensed),
+                settings.network.phy.model == PhyModel::sinr && cache_links_),
       is_far_(settings.network.phy),
       phys_(node_count, nullptr),
       link_of_receiver_(node_count),

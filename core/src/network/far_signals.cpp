@@ -71,7 +71,7 @@ void FarSignals::retire(SimTime now) {
     for (const FarLink& far : frame.links->far_by_receiver) {
       Receiver& r = receivers_[far.receiver];
       r.pending_units -= far.units;
-      if (r.hot && r.pending_units < hot_units_) end_events(far.receiver);
+      if (r.hot && !r.held && r.pending_units < hot_units_) end_events(far.receiver);
     }
   }
   while (counted_from_ < frames_.size() && !frames_[counted_from_].counted) ++counted_from_;
@@ -111,6 +111,14 @@ void FarSignals::end_events(NodeId receiver) {
   r.hot = false;
   r.lazy_from = next_number_;
   phys_[receiver]->end_far_events();
+}
+
+void FarSignals::hold_far_events(NodeId receiver, bool hold) {
+  Receiver& r = receivers_[receiver];
+  if (r.held == hold) return;
+  r.held = hold;
+  if (hold && !r.hot) begin_events(receiver);
+  if (!hold && r.hot && r.pending_units < hot_units_) end_events(receiver);
 }
 
 template <typename F>

@@ -43,6 +43,7 @@ class FarSignals final : public FarSignalSource {
                   std::vector<FarSignal>& out) const override;
   void far_signals_during(NodeId receiver, EventKey from, EventKey to,
                           std::vector<FarSignal>& out) const override;
+  void hold_far_events(NodeId receiver, bool hold) override;
 
   // How many frames are kept (tests).
   [[nodiscard]] std::size_t frames_kept() const { return frames_.size(); }
@@ -64,6 +65,8 @@ class FarSignals final : public FarSignalSource {
     // the far signals it had not been handed that were still to end were handed; the others had
     // ended, and no question asked while hot concerns them.
     bool hot = false;
+    // A PHY holds far signals as events (hold_far_events): hot, whatever pending_units says.
+    bool held = false;
     // Not hot: the frames numbered from here on were not handed over (every earlier one was, or
     // ended before it last became hot).
     std::uint64_t lazy_from = 0;

@@ -61,8 +61,12 @@
 //     PHY asks for the others when it needs them: at a window's end (a), at a reception's end,
 //     whose interference steps it then rebuilds from the arrivals at detection, the changes
 //     since and the far signals (b), and when a signal starts at an idle PHY, where it replays
-//     the windows the far signals that started since it last looked opened (c). The result is
-//     the same as with every signal as events (far_signals: events), to the bit.
+//     the windows the far signals that started since it last looked opened (c). Under
+//     header_failure_cca ns3 a far signal also matters (e) by joining a locked frame's preamble
+//     or header, which the PHY asks for when the header ends, and (f) by being the next signal
+//     to start while the MAC counts the medium idle, for which the node holds far signals as
+//     events (FarSignalSource::hold_far_events). The result is the same as with every signal as
+//     events (far_signals: events), to the bit.
 //
 // Both models: medium_busy/medium_idle callbacks report the transitions of medium_busy() caused
 // by arriving signals; the start and end of the node's own transmission are reported by

@@ -46,6 +46,10 @@ class FarSignalSource {
   // listed (nothing later depends on them).
   virtual void far_signals_during(NodeId receiver, EventKey from, EventKey to,
                                   std::vector<FarSignal>& out) const = 0;
+  // While held, `receiver` gets every far signal as events, as a hot receiver does: the PHY
+  // needs to see the next signal start (network.phy.header_failure_cca: ns3, while its MAC counts
+  // the medium idle). The far signals still to end are handed over when the hold begins.
+  virtual void hold_far_events(NodeId receiver, bool hold) = 0;
 
  protected:
   ~FarSignalSource() = default;

@@ -60,7 +60,7 @@ void SinrReception::transmission_started() {
   header_timer_ = kNoTimer;
   if (resume_sensing_timer_ != kNoTimer) scheduler_->cancel(resume_sensing_timer_);
   resume_sensing_timer_ = kNoTimer;
-  mac_told_idle_ = false;
+  set_mac_told_idle(false);
   close_window();
 }
 
@@ -132,10 +132,6 @@ void SinrReception::set_quiet_signal_source(const QuietSignalSource* source, Nod
 }
 
 void SinrReception::set_far_signal_source(FarSignalSource* source, NodeId self) {
-  // The header-failure rule counts every signal's arrival, so it needs them all as events.
-  if (ns3_header_rule_) {
-    throw std::logic_error("PHY: header_failure_cca ns3 needs every signal as an event");
-  }
   far_source_ = source;
   self_ = self;
 }
@@ -535,8 +531,13 @@ void SinrReception::judge_header() {
   // The header's chunks as finish_lock will score them (its steps up to the header's end are
   // final now); the payload's mode does not matter up to the header's end.
   const Lock* scored = &lock;
-  if (quiet_source_ != nullptr) {
+  if (quiet_source_ != nullptr || far_source_ != nullptr) {
     header_lock_ = lock;
+    // finish_lock rebuilds the lock's own steps at its end; a copy here keeps them for that.
+    if (far_source_ != nullptr) {
+      rebuild_interference(header_lock_);
+      note_far_joins(lock);
+    }
     add_quiet_interference(header_lock_, header_end);
     scored = &header_lock_;
   }
@@ -552,10 +553,34 @@ void SinrReception::judge_header() {
                                       scored->worst_interference_mw() > 0.0});
   spare_lock_ = std::move(lock);
   lock_.reset();
+  // Far signals that started during the reception opened no window.
+  window_synced_ = scheduler_->current_key();
   // ns-3's MAC is told the medium's state again unless a signal joined during the preamble and
   // none during the header (the file's comment).
-  mac_told_idle_ = joined_in_preamble_ && !joined_in_header_;
+  set_mac_told_idle(joined_in_preamble_ && !joined_in_header_);
   report_busy_change();
+}
+
+void SinrReception::note_far_joins(const Lock& lock) {
+  const EventKey now = scheduler_->current_key();
+  far_scratch_.clear();
+  far_source_->far_starts(self_, lock.detected, now, far_scratch_);
+  // Those handed over during the lock that had started already (later ones ran signal_start).
+  far_scratch_.insert(far_scratch_.end(), lock.far.begin(), lock.far.end());
+  for (const FarSignal& signal : far_scratch_) {
+    if (!(lock.detected < signal.start) || !(signal.start < now)) continue;
+    if (signal.start.time < lock.header_start()) {
+      joined_in_preamble_ = true;
+    } else if (signal.start.time < lock.header_end()) {
+      joined_in_header_ = true;
+    }
+  }
+}
+
+void SinrReception::set_mac_told_idle(bool idle) {
+  if (mac_told_idle_ == idle) return;
+  mac_told_idle_ = idle;
+  if (far_source_ != nullptr) far_source_->hold_far_events(self_, idle);
 }
 
 void SinrReception::report_aborted_collision(const Frame& frame) {
@@ -576,7 +601,7 @@ void SinrReception::report_aborted_collision(const Frame& frame) {
 
 void SinrReception::resume_sensing_after_window() {
   resume_sensing_timer_ = kNoTimer;
-  mac_told_idle_ = false;
+  set_mac_told_idle(false);
   report_busy_change();
 }
 

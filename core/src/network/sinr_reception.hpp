@@ -144,6 +144,12 @@ class SinrReception final : public PhyCore {
   // finish_lock would use; a failed one aborts the reception, and the MAC is told the medium is
   // idle where ns-3's would count it so.
   void judge_header();
+  // header_failure_cca ns3 with lazy far signals: the far signals not handed over as events that
+  // joined the lock during its preamble or header set the flags signal_start sets for the others.
+  void note_far_joins(const Lock& lock);
+  // header_failure_cca ns3: the MAC counts the medium idle (or no longer). While it does, the
+  // channel hands this PHY every far signal as events, so that the next one to start is seen.
+  void set_mac_told_idle(bool idle);
   // header_failure_cca ns3: a signal arrived while the MAC counts the medium idle; its detection
   // window's end tells the MAC what the PHY senses.
   void resume_sensing_after_window();
@@ -188,7 +194,7 @@ class SinrReception final : public PhyCore {
   bool mac_told_idle_ = false;
   TimerId header_timer_ = kNoTimer;
   TimerId resume_sensing_timer_ = kNoTimer;
-  Lock header_lock_{};  // judge_header's copy of the lock, with quiet signals added
+  Lock header_lock_{};  // judge_header's copy of the lock, with far and quiet signals added
   // The receptions judge_header aborted whose frames are still on the air (their collisions are
   // told at their ends; another frame may be locked and aborted meanwhile).
   struct AbortedReception {

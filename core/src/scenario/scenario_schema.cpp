@@ -225,9 +225,7 @@ const KeySpec& scenario_schema() {
                    "carrier sense goes on (the frame keeps the medium busy); ns3: as ns-3.37, the "
                    "reception is aborted at the header's end, and the MAC counts the medium idle "
                    "from there when a signal joined during the preamble and none during the "
-                   "header, until the next signal's detection window ends (docs/validation.md). "
-                   "ns3 hands every signal over as events (network.channel.far_signals has no "
-                   "effect).")
+                   "header, until the next signal's detection window ends (docs/validation.md).")
             .defaults("sensed"),
       }),
       map_key("channel", "The shared medium.", {
@@ -238,8 +236,8 @@ const KeySpec& scenario_schema() {
                    "receiver only when it can matter there (receiving, judging a preamble, or "
                    "when such signals could add up to the carrier-sense threshold); events hands "
                    "every signal over as events. Same results to the bit; lazy is faster "
-                   "(docs/performance.md). Fading models that draw per frame, and "
-                   "network.phy.header_failure_cca: ns3, always use events.")
+                   "(docs/performance.md). Fading models that draw per frame always use "
+                   "events.")
             .defaults("lazy"),
       }),
       plugin_key("mac", PluginKind::mac, "Medium access control.").plugin_default("ideal_mac"),
