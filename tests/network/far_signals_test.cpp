@@ -486,6 +486,19 @@ TEST_F(FarSignalsAtOneReceiver, LongFramesAreKeptForTheReceptionsTheyOverlap) {
   EXPECT_EQ(far_->frames_kept(), 3U) << "frame 1 kept past a frame's length and reach";
 }
 
+TEST_F(FarSignalsAtOneReceiver, FramesAreKeptForLongReceptionsOfFramesWithoutFarLinks) {
+  // A 3 ms frame heard only near (no far link) is a reception that rebuilds its interference
+  // back to its detection at its end: the short far frame that overlapped its start must still
+  // be there to be listed, though no frame with far links was ever that long.
+  send(us(10), -90.0, us(100));    // far, ends at 111 us
+  send(us(20), -60.0, us(3000));   // near only: arrives at 21 us, ends at 3021 us
+  send(us(3020), -90.0, us(100));  // retires what no question can reach any more
+  std::vector<FarSignal> listed;
+  far_->far_signals_during(0, EventKey{us(25), 0}, EventKey{us(3021), 0}, listed);
+  ASSERT_EQ(listed.size(), 1U) << describe(listed);  // the third starts at 3021 us, not before
+  EXPECT_EQ(listed[0].frame_uid, 1U);
+}
+
 TEST_F(FarSignalsAtOneReceiver, FarSignalsBecomeEventsOnlyWhileTheyCouldReachTheThreshold) {
   // Two far signals of -85.02 dBm add up to -82.01 dBm, below the -82 dBm CCA threshold: never
   // handed over, the medium stays idle.

@@ -46,11 +46,13 @@ void FarSignals::frame_sent(std::uint64_t uid, SimTime duration, std::uint64_t f
                             std::shared_ptr<const ChannelLinks> links) {
   const SimTime now = scheduler_.now();
   retire(now);
+  // Every frame counts here, far links or not: a reception of it rebuilds its interference back
+  // to its detection, so far frames are kept for the longest frame's length (retire).
+  longest_duration_ = std::max(longest_duration_, duration);
   if (links->far_by_receiver.empty()) return;
   // Links are in arrival order: the last one has the longest delay.
   const SimTime reach = links->links.back().delay;
   longest_reach_ = std::max(longest_reach_, reach);
-  longest_duration_ = std::max(longest_duration_, duration);
   AirFrame frame{
       uid, now, duration, now + reach + duration, first_sequence, std::move(links), next_number_++};
   for (const FarLink& far : frame.links->far_by_receiver) {

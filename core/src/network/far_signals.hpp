@@ -7,8 +7,9 @@
 // keeps the frames with far links on the air (the index the PHYs ask: far_starts,
 // far_signals_during) and, per receiver, an upper bound of the far power still to end there, in
 // integer units rounded up (exact sums, no drift). From the frame that takes that bound to the
-// threshold until frames retire below it again, the receiver is "hot" and gets every far signal
-// as events; when it becomes hot it is handed those still to end that it was not handed
+// threshold until frames retire below it again, and while its PHY holds far signals as events
+// (hold_far_events: header_failure_cca ns3), the receiver is "hot" and gets every far signal as
+// events; when it becomes hot it is handed those still to end that it was not handed
 // (Phy::begin_far_events). The cost of a far link that is not handed over is two integer
 // additions per frame, instead of two events at the receiver's PHY.
 #pragma once
@@ -61,9 +62,10 @@ class FarSignals final : public FarSignalSource {
   };
   struct Receiver {
     std::int64_t pending_units = 0;  // far power that has not surely ended, rounded up
-    // pending_units reached the threshold: every far signal goes as events. When it became hot,
-    // the far signals it had not been handed that were still to end were handed; the others had
-    // ended, and no question asked while hot concerns them.
+    // pending_units reached the threshold, or the PHY holds far signals as events: every far
+    // signal goes as events. When it became hot, the far signals it had not been handed that
+    // were still to end were handed; the others had ended, and no question asked while hot
+    // concerns them.
     bool hot = false;
     // A PHY holds far signals as events (hold_far_events): hot, whatever pending_units says.
     bool held = false;

@@ -553,7 +553,8 @@ void SinrReception::judge_header() {
                                       scored->worst_interference_mw() > 0.0});
   spare_lock_ = std::move(lock);
   lock_.reset();
-  // Far signals that started during the reception opened no window.
+  // Far signals that started during the reception opened no window. Before the hold below, whose
+  // hand-over replays the windows far starts opened since window_synced_.
   window_synced_ = scheduler_->current_key();
   // ns-3's MAC is told the medium's state again unless a signal joined during the preamble and
   // none during the header (the file's comment).
