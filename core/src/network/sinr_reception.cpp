@@ -80,13 +80,7 @@ void SinrReception::signal_start(std::uint64_t frame_uid, double rx_power_dbm, d
   const SimTime now = scheduler_->now();
   arrivals_.push_back(Arrival{frame_uid, rx_power_dbm, rx_power_mw, now, start_sequence});
   if (ns3_header_rule_) {
-    if (lock_) {
-      if (now < lock_->header_start()) {
-        joined_in_preamble_ = true;
-      } else if (now < lock_->header_end()) {
-        joined_in_header_ = true;
-      }
-    }
+    if (lock_) note_join(*lock_, now);
     if (mac_told_idle_ && resume_sensing_timer_ == kNoTimer) {
       resume_sensing_timer_ =
           scheduler_->schedule_in(kDetectionWindow, [this] { resume_sensing_after_window(); });
@@ -536,7 +530,7 @@ void SinrReception::judge_header() {
     // finish_lock rebuilds the lock's own steps at its end; a copy here keeps them for that.
     if (far_source_ != nullptr) {
       rebuild_interference(header_lock_);
-      note_far_joins(lock);
+      note_far_joins(header_lock_);
     }
     add_quiet_interference(header_lock_, header_end);
     scored = &header_lock_;
@@ -562,19 +556,19 @@ void SinrReception::judge_header() {
   report_busy_change();
 }
 
-void SinrReception::note_far_joins(const Lock& lock) {
-  const EventKey now = scheduler_->current_key();
-  far_scratch_.clear();
-  far_source_->far_starts(self_, lock.detected, now, far_scratch_);
-  // Those handed over during the lock that had started already (later ones ran signal_start).
-  far_scratch_.insert(far_scratch_.end(), lock.far.begin(), lock.far.end());
-  for (const FarSignal& signal : far_scratch_) {
-    if (!(lock.detected < signal.start) || !(signal.start < now)) continue;
-    if (signal.start.time < lock.header_start()) {
-      joined_in_preamble_ = true;
-    } else if (signal.start.time < lock.header_end()) {
-      joined_in_header_ = true;
-    }
+void SinrReception::note_join(const Lock& lock, SimTime start) {
+  if (start < lock.header_start()) {
+    joined_in_preamble_ = true;
+  } else if (start < lock.header_end()) {
+    joined_in_header_ = true;
+  }
+}
+
+void SinrReception::note_far_joins(const Lock& rebuilt) {
+  // The rebuilt steps' starts are every signal that started after detection, far ones included
+  // (the others already ran signal_start, which noted them the same way).
+  for (const Change& change : rebuilt.changes) {
+    if (change.start) note_join(rebuilt, change.key.time);
   }
 }
 

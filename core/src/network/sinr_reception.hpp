@@ -144,9 +144,12 @@ class SinrReception final : public PhyCore {
   // finish_lock would use; a failed one aborts the reception, and the MAC is told the medium is
   // idle where ns-3's would count it so.
   void judge_header();
-  // header_failure_cca ns3 with lazy far signals: the far signals not handed over as events that
-  // joined the lock during its preamble or header set the flags signal_start sets for the others.
-  void note_far_joins(const Lock& lock);
+  // header_failure_cca ns3: a signal that started at `start` joined the lock during its
+  // preamble or its header (or neither: after the header).
+  void note_join(const Lock& lock, SimTime start);
+  // header_failure_cca ns3 with lazy far signals: notes the joins of the far signals that were
+  // not handed over as events, from a copy of the lock whose steps rebuild_interference rebuilt.
+  void note_far_joins(const Lock& rebuilt);
   // header_failure_cca ns3: the MAC counts the medium idle (or no longer). While it does, the
   // channel hands this PHY every far signal as events, so that the next one to start is seen.
   void set_mac_told_idle(bool idle);
