@@ -7,13 +7,16 @@ with a SwarmNet-side option (network.phy.header_failure_cca: ns3) reusing ns-3's
 result must be the earlier one, byte for byte; and with another network.seed, which re-draws the
 network half alone and so leaves the traces as they were. Then three reuses that must be refused:
 other ns-3 options (the aligned setup), another ns-3 run number (run_grid.py --ns3-run), and
-other traces (a shorter run, so other messages). Last, a pair with another ns-3 run number runs
-ns-3 with it (its RngRun) on the very same traces.
+other traces (a shorter run, so other messages). Then a pair with another ns-3 run number runs
+ns-3 with it (its RngRun) on the very same traces. Last, run_grid.py --resume: a copy of the
+first pair's directory is read back without running anything, and run again when asked for
+other commands.
 """
 import argparse
 import filecmp
 import json
 import os
+import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -88,10 +91,23 @@ def main():
     if not refused(lambda: pair("shorter", ["duration_s=4"], ns3_from=kept),
                    "the traces changed"):
         failures.append("a reuse with other traces was not refused")
+    copied = os.path.join(args.work, "copied")
+    shutil.rmtree(copied, ignore_errors=True)
+    shutil.copytree(kept, copied)
+    outputs = [os.path.join(copied, name) for name in ("swarmnet.out", "ns3.out")]
+    for output in outputs:
+        os.remove(output)  # written again only if a program runs again
+    pair("copied", SHORT, resume=True)
+    if any(os.path.exists(output) for output in outputs):
+        failures.append("a pair copied to another directory was run again under --resume")
+    pair("copied", SHORT + ["network.seed=1001"], resume=True)
+    if not all(os.path.exists(output) for output in outputs):
+        failures.append("a pair asked for with other commands was read back under --resume")
     for failure in failures:
         print("FAIL: " + failure)
     if not failures:
-        print("ns-3 results are reused only for the same replay of the same traces")
+        print("ns-3 results are reused only for the same replay of the same traces, and pairs "
+              "resumed only for the same commands")
     return 1 if failures else 0
 
 

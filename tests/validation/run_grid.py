@@ -105,7 +105,8 @@ def main():
     parser.add_argument("--stack", choices=["auto", "80211", "disk"], default="auto")
     parser.add_argument("--resume", action="store_true",
                         help="read back every seed's pair that already ran to the end in OUT with "
-                             "the same commands (its commands.json) instead of running it again")
+                             "the same commands (its commands.json) instead of running it again; "
+                             "a pair's directory copied from another grid counts as run there")
     parser.add_argument("--ns3-from", metavar="EARLIER_OUT",
                         help="run only SwarmNet: take each pair's ns-3 result from an earlier "
                              "grid's directory (same rows, seeds and ns-3 options), after checking "

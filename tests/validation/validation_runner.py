@@ -216,12 +216,28 @@ def _reuse_ns3(kept_dir, ns3_command, run_dir, ns3_json):
 
 
 def _ran(record, planned):
-    """Whether `record` (written once both runs of a pair ended) names the `planned` commands."""
+    """Whether `record` (written once both runs of a pair ended) names the `planned` commands.
+    A pair's directory copied or moved since keeps the paths it ran under: they are read as the
+    directory's new place, so that a grid assembled from earlier grids' pairs is resumed."""
+    def moved(text, old_dir, new_dir):
+        if text == old_dir or text.startswith(old_dir + os.sep):
+            return new_dir + text[len(old_dir):]
+        return text
     try:
         with open(record, encoding="utf-8") as f:
-            return json.load(f) == planned
-    except (OSError, ValueError):
-        return False
+            recorded = json.load(f)
+        old_dir = os.path.dirname(_option(recorded["swarmnet"], "--out"))
+        new_dir = os.path.dirname(_option(planned["swarmnet"], "--out"))
+        recorded = {key: [moved(c, old_dir, new_dir) for c in value]
+                    if key in ("swarmnet", "ns3") else value for key, value in recorded.items()}
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+        return False  # no record, or not one this code wrote: run the pair again
+    return recorded == planned
+
+
+def _option(command, name):
+    """The value after `name` in `command` (ValueError if absent)."""
+    return command[command.index(name) + 1]
 
 
 def _run(command, output_path, log):
