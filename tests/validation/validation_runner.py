@@ -183,12 +183,13 @@ def _reuse_ns3(kept_dir, ns3_command, run_dir, ns3_json):
     try:
         with open(os.path.join(kept_dir, "commands.json"), encoding="utf-8") as f:
             kept = json.load(f)["ns3"]
+        kept_out = _option(kept, "-o")
     except (OSError, ValueError, KeyError) as error:
         raise RuntimeError(f"{kept_dir}: no ns-3 run recorded to reuse ({error})") from error
     # The same options: all but the replay's own path, the run directory and the output file.
     def options(command, run, out):
         return [c for c in command[1:] if c not in (run, out)]
-    if options(kept, kept[1], kept[kept.index("-o") + 1]) != \
+    if options(kept, kept[1], kept_out) != \
             options(ns3_command, run_dir, ns3_json):
         raise RuntimeError(f"{kept_dir}: its ns-3 run had other options: "
                            f"{' '.join(kept[2:])}")
@@ -227,7 +228,7 @@ def _ran(record, planned):
         with open(record, encoding="utf-8") as f:
             recorded = json.load(f)
         old_dir = os.path.dirname(_option(recorded["swarmnet"], "--out"))
-        new_dir = os.path.dirname(_option(planned["swarmnet"], "--out"))
+        new_dir = os.path.dirname(record)
         recorded = {key: [moved(c, old_dir, new_dir) for c in value]
                     if key in ("swarmnet", "ns3") else value for key, value in recorded.items()}
     except (OSError, ValueError, KeyError, TypeError, AttributeError):
