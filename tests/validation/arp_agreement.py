@@ -20,6 +20,9 @@ through SwarmNet's network half (`swarmnet replay`, network.arp: ns3) and throug
         from the first lookup) and every message dropped, for the full pending queue or as
         unresolved (ns-3: retries exhausted, then the entry dead), equally on both sides.
 
+In every case the messages ARP dropped, and why, are the same on both sides message by message
+(ns-3's from the replay's --ip-trace: arp_drop events, their reason as the JSON counts it).
+
 The five burst messages are handed down within 100 ns of one another: SwarmNet injects a
 message at its step's start plus an offset hashed from the seed and its id
 (core/src/protocol/step_data.hpp, injection_offset), so the burst takes five ids whose offsets
@@ -72,6 +75,7 @@ def common_problems(case, expected=None):
     frames = case.replay["arp"]["request_frames"]
     if frames != ns3["requests"]:
         problems.append(f"ns-3: {ns3['requests']} requests but {frames} request frames")
+    problems += arp_drop_problems(case)
     sn_delivered = sorted(m for m in case.sn if tt.delay_ns(case.sn, m) is not None)
     ns3_delivered = sorted(m for m in case.ns3 if case.ns3[m]["deliver"] is not None)
     if sn_delivered != ns3_delivered:
@@ -81,6 +85,25 @@ def common_problems(case, expected=None):
         if sn_inject != entry["inject"]:
             problems.append(f"message {message_id}: injected at {sn_inject} ns in SwarmNet, "
                             f"{entry['inject']} ns in ns-3")
+    return problems
+
+
+# SwarmNet's drop reason for each of ns-3's ARP drop reasons (the replay's --ip-trace)
+NS3_ARP_DROP_AS = {"queue_full": "arp_queue_full", "dead_entry": "arp_unresolved",
+                   "retries_exhausted": "arp_unresolved"}
+
+
+def arp_drop_problems(case):
+    """Message by message: the messages ARP dropped, and why, are the same on both sides."""
+    problems = []
+    for message_id in sorted(set(case.sn) | set(case.ns3)):
+        sn_reason = case.sn.get(message_id, {}).get("drop")
+        sn_arp = sn_reason if sn_reason in ("arp_queue_full", "arp_unresolved") else None
+        ns3_reason = case.ns3.get(message_id, {}).get("arp_drop")
+        ns3_arp = NS3_ARP_DROP_AS.get(ns3_reason, ns3_reason)
+        if sn_arp != ns3_arp:
+            problems.append(f"message {message_id}: ARP drop {sn_arp} in SwarmNet, "
+                            f"{ns3_reason} in ns-3")
     return problems
 
 

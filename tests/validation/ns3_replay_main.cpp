@@ -368,21 +368,31 @@ struct ArpState {
 ArpState g_arp_state;
 
 // The kind of an IP packet ARP dropped (it carries its IPv4 header): "data", an AODV message type
-// or "other"; "" if it is no IP packet. *destination is its IP destination.
-std::string arp_dropped_kind(ns3::Ptr<const ns3::Packet> packet, ns3::Ipv4Address* destination) {
+// or "other"; "" if it is no IP packet. *ip is its IPv4 header, *message_id as payload_kind's.
+std::string arp_dropped_kind(ns3::Ptr<const ns3::Packet> packet, ns3::Ipv4Header* ip,
+                             std::int64_t* message_id) {
+  *message_id = -1;
   if (packet->GetSize() < 20) return "";
   ns3::Ptr<ns3::Packet> copy = packet->Copy();
-  ns3::Ipv4Header ip;
-  if (copy->RemoveHeader(ip) == 0) return "";
-  *destination = ip.GetDestination();
-  std::int64_t message_id = -1;
-  return payload_kind(ip, copy, &message_id);
+  if (copy->RemoveHeader(*ip) == 0) return "";
+  return payload_kind(*ip, copy, message_id);
+}
+
+// With --ip-trace, a packet ARP dropped: "arp_drop" for a replayed message, "arp_drop_<kind>" for
+// anything else; the detail is the reason as counted in ArpCounters.
+void trace_arp_drop(std::uint32_t node, const std::string& kind, std::int64_t message_id,
+                    const ns3::Ipv4Header& ip, const char* reason) {
+  if (!g_ip_trace.out.is_open()) return;
+  const std::string event = kind == "data" ? "arp_drop" : "arp_drop_" + kind;
+  write_ip_event(node, event.c_str(), message_id, ip, reason);
 }
 
 // ArpL3Protocol Drop at `node` (see ArpCounters).
 void on_arp_l3_drop(std::uint32_t node, ns3::Ptr<const ns3::Packet> packet) {
-  ns3::Ipv4Address destination;
-  const std::string kind = arp_dropped_kind(packet, &destination);
+  ns3::Ipv4Header ip;
+  std::int64_t message_id = -1;
+  const std::string kind = arp_dropped_kind(packet, &ip, &message_id);
+  const ns3::Ipv4Address destination = ip.GetDestination();
   if (kind.empty()) {
     ++g_arp.unexpected_replies;
     return;
@@ -402,19 +412,24 @@ void on_arp_l3_drop(std::uint32_t node, ns3::Ptr<const ns3::Packet> packet) {
   const bool own_dead = own != nullptr && !own->IsExpired() && own->IsDead();
   if (pending && (!dead || own_pending)) {
     ++g_arp.queue_full;
+    trace_arp_drop(node, kind, message_id, ip, "queue_full");
   } else if (dead && (!pending || own_dead)) {
     ++g_arp.dead_entry;
+    trace_arp_drop(node, kind, message_id, ip, "dead_entry");
   } else {
     ++g_arp.queue_full_or_dead_entry;
+    trace_arp_drop(node, kind, message_id, ip, "queue_full_or_dead_entry");
   }
 }
 
-// ArpCache Drop: a packet still queued when its resolution gave up.
-void on_arp_cache_drop(ns3::Ptr<const ns3::Packet> packet) {
+// ArpCache Drop at `node`: a packet still queued when its resolution gave up.
+void on_arp_cache_drop(std::uint32_t node, ns3::Ptr<const ns3::Packet> packet) {
   ++g_arp.retries_exhausted;
-  ns3::Ipv4Address destination;
-  const std::string kind = arp_dropped_kind(packet, &destination);
+  ns3::Ipv4Header ip;
+  std::int64_t message_id = -1;
+  const std::string kind = arp_dropped_kind(packet, &ip, &message_id);
   ++g_arp.dropped_by_kind[kind.empty() ? "other" : kind];
+  if (!kind.empty()) trace_arp_drop(node, kind, message_id, ip, "retries_exhausted");
 }
 
 // The MAC's DroppedMpdu trace is what ns-3's AODV takes as layer-2 feedback (a unicast MPDU
@@ -705,7 +720,7 @@ nlohmann::ordered_json run(const Options& options) {
     node->GetObject<ns3::ArpL3Protocol>()->TraceConnectWithoutContext(
         "Drop", ns3::MakeBoundCallback(&on_arp_l3_drop, i));
     g_arp_state.cache_of_node.back()->TraceConnectWithoutContext(
-        "Drop", ns3::MakeCallback(&on_arp_cache_drop));
+        "Drop", ns3::MakeBoundCallback(&on_arp_cache_drop, i));
   }
 
   std::int64_t stream = 1000;
@@ -933,7 +948,8 @@ int main(int argc, char** argv) {
                  "CSV file of every message: message_id,source,destination,inject_ns,"
                  "delivered_ns (-1: not delivered)");
   app.add_option("--ip-trace", options.ip_trace,
-                 "CSV file of every IP forward and drop of a message and every AODV control "
+                 "CSV file of every IP forward and drop of a message, every packet ARP "
+                 "dropped (event arp_drop, detail the reason) and every AODV control "
                  "message sent: time_ns,node,event,message_id,ip_ttl,ip_destination,detail "
                  "(ip_destination -1: broadcast)");
   app.add_option("--duration-s", options.duration_s,

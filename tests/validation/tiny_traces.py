@@ -89,7 +89,7 @@ class Case:
         self.name = name
         self.routing = routing
         self.sn = {}  # message id -> {"inject": ns, "deliver": ns, "drop": reason}
-        self.ns3 = {}  # message id -> {"inject": ns, "deliver": ns or None}
+        self.ns3 = {}  # message id -> {"inject": ns, "deliver": ns or None, "arp_drop": reason}
         self.ns3_arp_frames = []  # (time_ns, node, receiver)
         self.summary = None
         self.replay = None
@@ -130,9 +130,10 @@ def run_case(args, name, xs, routing, duration_s, traffic, sets=(), ns3_options=
     ns3_json = os.path.join(work, "ns3.json")
     deliveries = os.path.join(work, "ns3-deliveries.csv")
     frames = os.path.join(work, "ns3-frames.csv")
+    ip_events = os.path.join(work, "ns3-ip.csv")
     _run([args.ns3, run_dir, "--routing", routing, "--seed", str(SEED), "-o", ns3_json,
-          "--delivery-trace", deliveries, "--frame-trace", frames] + vr.NS3_RADIO +
-         list(ns3_options), work, "ns3")
+          "--delivery-trace", deliveries, "--frame-trace", frames, "--ip-trace", ip_events] +
+         vr.NS3_RADIO + list(ns3_options), work, "ns3")
 
     with open(os.path.join(sn_dir, "summary.json"), encoding="utf-8") as f:
         case.summary = json.load(f)
@@ -156,6 +157,10 @@ def run_case(args, name, xs, routing, duration_s, traffic, sets=(), ns3_options=
             delivered = int(row["delivered_ns"])
             case.ns3[int(row["message_id"])] = {"inject": int(row["inject_ns"]),
                                                 "deliver": delivered if delivered >= 0 else None}
+    with open(ip_events, encoding="utf-8") as f:
+        for row in csv.DictReader(f):
+            if row["event"] == "arp_drop":
+                case.ns3[int(row["message_id"])].setdefault("arp_drop", row["detail"])
     with open(frames, encoding="utf-8") as f:
         case.ns3_arp_frames = [(int(r["time_ns"]), int(r["node"]), int(r["receiver"]))
                                for r in csv.DictReader(f) if r["kind"] == "arp"]
