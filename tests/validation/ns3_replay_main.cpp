@@ -24,6 +24,7 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -108,8 +109,9 @@ struct MacCounters {
 // reply nobody waits for; ArpCache's Drop trace for every packet still queued when a resolution
 // gives up (MaxRetries requests unanswered). The trace does not say which next hop a dropped
 // packet waited for: a drop is put down to a full queue or a dead entry from the node's cache
-// (entries pending vs. dead), and where the node has both kinds and the packet's own IP
-// destination is neither, it is counted as ambiguous.
+// (entries pending vs. dead); where the node has both kinds and the packet's own IP destination
+// is neither, from the entry of the gateway of AODV's route to that destination, and without one
+// (flooding, `direct`, no route) it is counted as ambiguous.
 struct ArpCounters {
   std::uint64_t requests = 0;                  // requests handed to the MAC, re-sent ones too
   std::uint64_t replies = 0;                   // replies handed to the MAC (unicast)
@@ -359,11 +361,12 @@ void on_mac_tx(ns3::Ptr<const ns3::Packet> packet) {
   if (arp == 2) ++g_arp.replies;
 }
 
-// For the ARP drop sinks: every node's ARP cache on its wireless interface, and every node's
-// address (the next hops a cache can hold).
+// For the ARP drop sinks: every node's ARP cache on its wireless interface, every node's address
+// (the next hops a cache can hold) and, under AODV, every node's routing protocol.
 struct ArpState {
   std::vector<ns3::Ptr<ns3::ArpCache>> cache_of_node;
   std::vector<ns3::Ipv4Address> addresses;
+  std::vector<ns3::Ptr<ns3::Ipv4RoutingProtocol>> aodv_of_node;
 };
 ArpState g_arp_state;
 
@@ -387,6 +390,28 @@ void trace_arp_drop(std::uint32_t node, const std::string& kind, std::int64_t me
   write_ip_event(node, event.c_str(), message_id, ip, reason);
 }
 
+// The gateway of `node`'s AODV route to `destination`, or nullopt without AODV or such a route.
+// PrintRoutingTable is AODV's only public view of its table; it prints a purged copy and leaves
+// the protocol as it was.
+std::optional<ns3::Ipv4Address> aodv_gateway(std::uint32_t node, ns3::Ipv4Address destination) {
+  if (g_arp_state.aodv_of_node.empty()) return std::nullopt;
+  std::ostringstream table;
+  g_arp_state.aodv_of_node[node]->PrintRoutingTable(ns3::Create<ns3::OutputStreamWrapper>(&table));
+  std::ostringstream wanted;
+  wanted << destination;
+  std::istringstream lines(table.str());
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::istringstream fields(line);
+    std::string route_destination;
+    std::string gateway;
+    if (fields >> route_destination >> gateway && route_destination == wanted.str()) {
+      return ns3::Ipv4Address(gateway.c_str());
+    }
+  }
+  return std::nullopt;
+}
+
 // ArpL3Protocol Drop at `node` (see ArpCounters).
 void on_arp_l3_drop(std::uint32_t node, ns3::Ptr<const ns3::Packet> packet) {
   ns3::Ipv4Header ip;
@@ -407,7 +432,12 @@ void on_arp_l3_drop(std::uint32_t node, ns3::Ptr<const ns3::Packet> packet) {
     pending = pending || entry->IsWaitReply();
     dead = dead || entry->IsDead();
   }
+  // The packet's next hop: its IP destination if that is a neighbour ARP knows of, else (both
+  // kinds of entry present) the gateway of AODV's route to that destination.
   ns3::ArpCache::Entry* own = cache->Lookup(destination);
+  if ((own == nullptr || own->IsExpired()) && pending && dead) {
+    if (const auto gateway = aodv_gateway(node, destination)) own = cache->Lookup(*gateway);
+  }
   const bool own_pending = own != nullptr && !own->IsExpired() && own->IsWaitReply();
   const bool own_dead = own != nullptr && !own->IsExpired() && own->IsDead();
   if (pending && (!dead || own_pending)) {
@@ -721,6 +751,9 @@ nlohmann::ordered_json run(const Options& options) {
         "Drop", ns3::MakeBoundCallback(&on_arp_l3_drop, i));
     g_arp_state.cache_of_node.back()->TraceConnectWithoutContext(
         "Drop", ns3::MakeBoundCallback(&on_arp_cache_drop, i));
+    if (options.routing == "aodv") {
+      g_arp_state.aodv_of_node.push_back(node->GetObject<ns3::Ipv4>()->GetRoutingProtocol());
+    }
   }
 
   std::int64_t stream = 1000;
