@@ -35,6 +35,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import tiny_traces as tt  # noqa: E402
+from loss_by_reason import NS3_ARP_AS  # noqa: E402
 
 JITTER_MS_MAX = 10  # ARP: a whole number of ms in 0..9; ns-3's AODV broadcast jitter: 0..10 ms
 SAME_NS = 5_000  # later messages: equal delays, to a few microseconds
@@ -88,11 +89,6 @@ def common_problems(case, expected=None):
     return problems
 
 
-# SwarmNet's drop reason for each of ns-3's ARP drop reasons (the replay's --ip-trace)
-NS3_ARP_DROP_AS = {"queue_full": "arp_queue_full", "dead_entry": "arp_unresolved",
-                   "retries_exhausted": "arp_unresolved"}
-
-
 def arp_drop_problems(case):
     """Message by message: the messages ARP dropped, and why, are the same on both sides."""
     problems = []
@@ -100,7 +96,7 @@ def arp_drop_problems(case):
         sn_reason = case.sn.get(message_id, {}).get("drop")
         sn_arp = sn_reason if sn_reason in ("arp_queue_full", "arp_unresolved") else None
         ns3_reason = case.ns3.get(message_id, {}).get("arp_drop")
-        ns3_arp = NS3_ARP_DROP_AS.get(ns3_reason, ns3_reason)
+        ns3_arp = NS3_ARP_AS.get(ns3_reason, ns3_reason)
         if sn_arp != ns3_arp:
             problems.append(f"message {message_id}: ARP drop {sn_arp} in SwarmNet, "
                             f"{ns3_reason} in ns-3")

@@ -27,6 +27,8 @@ import json
 import os
 import sys
 
+# SwarmNet's drop reason for each of ns-3's ARP drop reasons (the replay's --ip-trace); the
+# unplaced one has no SwarmNet counterpart. arp_agreement.py checks message by message with it.
 NS3_ARP_AS = {"queue_full": "arp_queue_full", "dead_entry": "arp_unresolved",
               "retries_exhausted": "arp_unresolved",
               "queue_full_or_dead_entry": "arp_queue_full_or_unresolved"}
@@ -82,13 +84,13 @@ def ns3_run(spec):
                                  delivered=replay["packets"]["delivered"])
     dropped = set()
     for row in read_csv(trace_path):
-        if row["event"] in ("arp_drop", "drop") and row["message_id"] in dropped:
-            continue
         if row["event"] == "arp_drop":
             reason = NS3_ARP_AS.get(row["detail"], "arp_" + row["detail"])
         elif row["event"] == "drop":
             reason = row["detail"]
         else:
+            continue
+        if row["message_id"] in dropped:
             continue
         source = source_of.get(row["message_id"])
         if source is None:
