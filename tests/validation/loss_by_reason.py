@@ -15,8 +15,8 @@ arp_queue_full, and an IP drop keeps its name. What neither trace records (ns-3:
 limit and queues, AODV's own queue) is the rest: sent - delivered - every drop counted.
 A message is counted once, at its first drop, and SwarmNet's not at all if a copy of it was
 delivered (a copy retransmitted by the MAC can be delivered and dropped); ns-3's IP trace does
-not say which were delivered. A source is the message's source in traffic.csv, read from the SwarmNet run directory the
-replay names in its JSON (run_dir).
+not say which were delivered. A source is the message's source in traffic.csv, read from the
+SwarmNet run directory the replay names in its JSON (run_dir).
 
 Writes the mean per run of every count on each side as JSON (stdout or --out) and prints a table.
 Python standard library only."""
@@ -50,6 +50,14 @@ def read_json(path):
         raise SystemExit(f"loss_by_reason: cannot read {path}: {error}") from error
 
 
+def count_first_drop(counts, dropped, message, reason, node, source):
+    """Counts `message` under reason@source or reason@relay unless it was counted before."""
+    if message in dropped:
+        return
+    dropped.add(message)
+    counts[f"{reason}@{'source' if node == source else 'relay'}"] += 1
+
+
 def swarmnet_run(run_dir):
     """One SwarmNet run's counts: sent, delivered and data drops by reason@where."""
     summary = read_json(os.path.join(run_dir, "summary.json"))
@@ -63,12 +71,9 @@ def swarmnet_run(run_dir):
     delivered = {row["message_id"] for row in rows if row["event"] == "deliver"}
     dropped = set()
     for row in rows:
-        message = row["message_id"]
-        if row["event"] != "drop" or message in delivered or message in dropped:
-            continue
-        dropped.add(message)
-        where = "source" if row["node"] == row["source"] else "relay"
-        counts[f"{row['detail']}@{where}"] += 1
+        if row["event"] == "drop" and row["message_id"] not in delivered:
+            count_first_drop(counts, dropped, row["message_id"], row["detail"], row["node"],
+                             row["source"])
     return counts
 
 
@@ -90,14 +95,11 @@ def ns3_run(spec):
             reason = row["detail"]
         else:
             continue
-        if row["message_id"] in dropped:
-            continue
         source = source_of.get(row["message_id"])
         if source is None:
             raise SystemExit(f"loss_by_reason: {trace_path}: message {row['message_id']} is not "
                              f"in {traffic}")
-        dropped.add(row["message_id"])
-        counts[f"{reason}@{'source' if row['node'] == source else 'relay'}"] += 1
+        count_first_drop(counts, dropped, row["message_id"], reason, row["node"], source)
     return counts
 
 
