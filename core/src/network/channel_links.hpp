@@ -36,15 +36,13 @@ struct FarLink {
 
 struct ChannelLinks {
   std::vector<ChannelLink> links;  // by (delay, receiver): arrival order
-  // The far links by receiver, ascending; and which receivers have one, as bits with the count
-  // of those in the words before: far_link() finds a receiver's link with a word test and a
-  // popcount (a question about a frame is asked about many receivers).
+  // The far links by receiver, ascending (the order in which the far-signal bookkeeping visits
+  // receivers, so the order of what it hands over).
   std::vector<FarLink> far_by_receiver;
   // The links that are not far, by index in arrival order: the fan-out's two streams walk these
   // (about 9 of 190 links in the study's scenario) instead of skipping the far ones one by one.
   std::vector<std::uint32_t> near;
-  std::vector<std::uint64_t> far_bits;
-  std::vector<std::uint32_t> far_bits_before;
+  std::vector<std::uint64_t> far_bits;  // index_far's scratch: which receivers have a far link
 
   void clear() {
     links.clear();
@@ -69,24 +67,13 @@ struct ChannelLinks {
     }
     // In receiver order, by walking the bits.
     far_by_receiver.clear();
-    far_bits_before.resize(far_bits.size());
     for (std::size_t w = 0; w < far_bits.size(); ++w) {
-      far_bits_before[w] = static_cast<std::uint32_t>(far_by_receiver.size());
       for (std::uint64_t bits = far_bits[w]; bits != 0; bits &= bits - 1) {
         const auto receiver = static_cast<NodeId>(w * 64 + std::countr_zero(bits));
         const std::uint32_t link = scratch[receiver];
         far_by_receiver.push_back(FarLink{receiver, link, links[link].far_units});
       }
     }
-  }
-  // The index of `receiver`'s far link, or links.size() if it has none.
-  [[nodiscard]] std::size_t far_link(NodeId receiver) const {
-    const std::size_t word = receiver / 64;
-    if (word >= far_bits.size() || (far_bits[word] & bit(receiver)) == 0) return links.size();
-    const std::uint32_t rank =
-        far_bits_before[word] +
-        static_cast<std::uint32_t>(std::popcount(far_bits[word] & (bit(receiver) - 1)));
-    return far_by_receiver[rank].link;
   }
 
  private:

@@ -37,9 +37,20 @@ FarSignal FarSignals::signal_of(const AirFrame& frame, std::size_t link) {
                    EventKey{start.time + frame.duration, start.sequence + 1}};
 }
 
-std::size_t FarSignals::first_numbered(std::uint64_t number) const {
-  if (frames_.empty() || number <= frames_.front().number) return 0;
-  return std::min<std::size_t>(frames_.size(), number - frames_.front().number);
+std::uint64_t FarSignals::oldest_number() const {
+  return frames_.empty() ? next_number_ : frames_.front().number;
+}
+
+void FarSignals::remember_at(Receiver& r, std::uint64_t oldest, FarEntry entry) {
+  // Entries are by number, so the forgotten ones are a prefix. They are dropped only when the
+  // list is full, before it would grow: a list never holds more than twice the most frames kept
+  // at once, and a push usually costs no more than the push.
+  if (r.frames.size() == r.frames.capacity()) {
+    const auto kept = std::find_if(r.frames.begin(), r.frames.end(),
+                                   [&](const FarEntry& e) { return e.number >= oldest; });
+    r.frames.erase(r.frames.begin(), kept);
+  }
+  r.frames.push_back(entry);
 }
 
 void FarSignals::frame_sent(std::uint64_t uid, SimTime duration, std::uint64_t first_sequence,
@@ -53,6 +64,7 @@ void FarSignals::frame_sent(std::uint64_t uid, SimTime duration, std::uint64_t f
   // Links are in arrival order: the last one has the longest delay.
   const SimTime reach = links->links.back().delay;
   longest_reach_ = std::max(longest_reach_, reach);
+  const std::uint64_t oldest = oldest_number();
   AirFrame frame{
       uid, now, duration, now + reach + duration, first_sequence, std::move(links), next_number_++};
   for (const FarLink& far : frame.links->far_by_receiver) {
@@ -60,6 +72,8 @@ void FarSignals::frame_sent(std::uint64_t uid, SimTime duration, std::uint64_t f
     r.pending_units += far.units;
     if (!r.hot && r.pending_units >= hot_units_) begin_events(far.receiver);  // this one follows
     if (r.hot) frame.links->links[far.link].phy->far_signal_event(signal_of(frame, far.link));
+    // After begin_events, which hands over the kept frames: this one is not kept yet.
+    remember_at(r, oldest, FarEntry{frame.number, far.link});
   }
   frames_.push_back(std::move(frame));
 }
@@ -93,14 +107,11 @@ void FarSignals::begin_events(NodeId receiver) {
   const EventKey horizon = phys_[receiver]->far_history_start();
   std::vector<FarSignal>& signals = scratch_;
   signals.clear();
-  for (std::size_t i = first_numbered(r.lazy_from); i < frames_.size(); ++i) {
-    const AirFrame& frame = frames_[i];
-    if (frame.last_end < horizon.time) continue;  // over everywhere
-    const std::size_t index = frame.links->far_link(receiver);
-    if (index == frame.links->links.size()) continue;
-    const FarSignal signal = signal_of(frame, index);
-    if (horizon < signal.end) signals.push_back(signal);
-  }
+  for_each_far_frame(r, r.lazy_from, SimTime::min(), horizon.time,
+                     [&](const AirFrame& frame, std::size_t index) {
+                       const FarSignal signal = signal_of(frame, index);
+                       if (horizon < signal.end) signals.push_back(signal);
+                     });
   std::sort(signals.begin(), signals.end(), by_start);
   // Hot only after: the PHY first replays the windows of those that already started, which
   // far_starts must still list.
@@ -124,37 +135,42 @@ void FarSignals::hold_far_events(NodeId receiver, bool hold) {
 }
 
 template <typename F>
-void FarSignals::for_each_lazy(NodeId receiver, SimTime sent_from, SimTime ends_after,
-                               F&& f) const {
-  const Receiver& r = receivers_[receiver];
-  if (r.hot) return;
-  for (auto it = frames_.rbegin(); it != frames_.rend() && it->sent >= sent_from; ++it) {
-    if (it->number < r.lazy_from) break;      // handed over, as every earlier one
-    if (it->last_end < ends_after) continue;  // over everywhere
-    const std::size_t index = it->links->far_link(receiver);
-    if (index != it->links->links.size()) f(*it, index);
+void FarSignals::for_each_far_frame(const Receiver& r, std::uint64_t from_number, SimTime sent_from,
+                                    SimTime ends_after, F&& f) const {
+  const std::uint64_t oldest = oldest_number();
+  for (std::size_t i = r.frames.size(); i-- > 0;) {
+    const FarEntry entry = r.frames[i];
+    if (entry.number < from_number || entry.number < oldest) break;  // so is every earlier one
+    const AirFrame& frame = frames_[entry.number - oldest];
+    if (frame.sent < sent_from) break;
+    if (frame.last_end < ends_after) continue;  // over everywhere
+    f(frame, entry.link);
   }
 }
 
 void FarSignals::far_starts(NodeId receiver, EventKey from, EventKey to,
                             std::vector<FarSignal>& out) const {
+  const Receiver& r = receivers_[receiver];
+  if (r.hot) return;  // every far signal was handed over
   const std::size_t first = out.size();
   // A frame's signals start at most longest_reach_ after it was sent.
-  for_each_lazy(receiver, from.time - longest_reach_, from.time,
-                [&](const AirFrame& frame, std::size_t index) {
-                  const FarSignal signal = signal_of(frame, index);
-                  if (from < signal.start && signal.start < to) out.push_back(signal);
-                });
+  for_each_far_frame(r, r.lazy_from, from.time - longest_reach_, from.time,
+                     [&](const AirFrame& frame, std::size_t index) {
+                       const FarSignal signal = signal_of(frame, index);
+                       if (from < signal.start && signal.start < to) out.push_back(signal);
+                     });
   std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), by_start);
 }
 
 void FarSignals::far_signals_during(NodeId receiver, EventKey from, EventKey to,
                                     std::vector<FarSignal>& out) const {
-  for_each_lazy(receiver, from.time - longest_reach_ - longest_duration_, from.time,
-                [&](const AirFrame& frame, std::size_t index) {
-                  const FarSignal signal = signal_of(frame, index);
-                  if (signal.start < to && from < signal.end) out.push_back(signal);
-                });
+  const Receiver& r = receivers_[receiver];
+  if (r.hot) return;
+  for_each_far_frame(r, r.lazy_from, from.time - longest_reach_ - longest_duration_, from.time,
+                     [&](const AirFrame& frame, std::size_t index) {
+                       const FarSignal signal = signal_of(frame, index);
+                       if (signal.start < to && from < signal.end) out.push_back(signal);
+                     });
 }
 
 }  // namespace swarmnet

@@ -4,14 +4,15 @@
 // can be detected by about 9: the rest get a far signal, which matters to a receiver only when it
 // judges a preamble or receives a frame (interference), when the far signals arriving at it
 // could add up to the carrier-sense threshold, and for the detection windows they open. This
-// keeps the frames with far links on the air (the index the PHYs ask: far_starts,
-// far_signals_during) and, per receiver, an upper bound of the far power still to end there, in
+// keeps the frames with far links on the air, and per receiver the list of those that reach it
+// (the index the PHYs ask: far_starts, far_signals_during; a question visits its receiver's
+// frames, not every frame on the air) and an upper bound of the far power still to end there, in
 // integer units rounded up (exact sums, no drift). From the frame that takes that bound to the
 // threshold until frames retire below it again, and while its PHY holds far signals as events
 // (hold_far_events: header_failure_cca ns3), the receiver is "hot" and gets every far signal as
 // events; when it becomes hot it is handed those still to end that it was not handed
 // (Phy::begin_far_events). The cost of a far link that is not handed over is two integer
-// additions per frame, instead of two events at the receiver's PHY.
+// additions and an entry in the receiver's list per frame, instead of two events at its PHY.
 #pragma once
 
 #include <cstdint>
@@ -46,8 +47,11 @@ class FarSignals final : public FarSignalSource {
                           std::vector<FarSignal>& out) const override;
   void hold_far_events(NodeId receiver, bool hold) override;
 
-  // How many frames are kept (tests).
+  // How many frames are kept, and how many entries a receiver's list holds (tests).
   [[nodiscard]] std::size_t frames_kept() const { return frames_.size(); }
+  [[nodiscard]] std::size_t entries_kept(NodeId receiver) const {
+    return receivers_[receiver].frames.size();
+  }
 
  private:
   struct AirFrame {
@@ -59,6 +63,13 @@ class FarSignals final : public FarSignalSource {
     std::shared_ptr<const ChannelLinks> links;
     std::uint64_t number;  // frames with far links are numbered in the order sent
     bool counted = true;   // its far units are still in the receivers' bounds
+  };
+  // A kept frame that reaches a receiver with a far link, in that receiver's list: a question
+  // visits the frames that reach its receiver, not every frame on the air (at thousands of
+  // robots most of those are beyond the receiver's cutoff).
+  struct FarEntry {
+    std::uint64_t number;  // the frame's
+    std::uint32_t link;    // the index of its far link to this receiver
   };
   struct Receiver {
     std::int64_t pending_units = 0;  // far power that has not surely ended, rounded up
@@ -72,21 +83,27 @@ class FarSignals final : public FarSignalSource {
     // Not hot: the frames numbered from here on were not handed over (every earlier one was, or
     // ended before it last became hot).
     std::uint64_t lazy_from = 0;
+    // The frames with a far link here, in the order sent; entries of frames no longer kept are
+    // dropped when the list is full (remember_at).
+    std::vector<FarEntry> frames;
   };
 
   [[nodiscard]] static FarSignal signal_of(const AirFrame& frame, std::size_t link);
-  // The first kept frame numbered `number` or later.
-  [[nodiscard]] std::size_t first_numbered(std::uint64_t number) const;
+  // The number of the oldest kept frame (the next frame's when none is kept).
+  [[nodiscard]] std::uint64_t oldest_number() const;
+  // Adds a frame to a receiver's list, forgetting those numbered below `oldest` if it is full.
+  static void remember_at(Receiver& r, std::uint64_t oldest, FarEntry entry);
   // Takes back the units of the frames whose far signals have all ended, and forgets the frames
   // nobody can ask about any more.
   void retire(SimTime now);
   void begin_events(NodeId receiver);
   void end_events(NodeId receiver);
-  // Calls f(frame, link index) for each kept frame not handed to `receiver` that reaches it
-  // with a far signal, was sent at or after `sent_from` and is on the air somewhere at or after
-  // `ends_after`, latest first.
+  // Calls f(frame, link index) for each kept frame numbered `from_number` or later that reaches
+  // `receiver` with a far signal, was sent at or after `sent_from` and is on the air somewhere at
+  // or after `ends_after`, latest first.
   template <typename F>
-  void for_each_lazy(NodeId receiver, SimTime sent_from, SimTime ends_after, F&& f) const;
+  void for_each_far_frame(const Receiver& r, std::uint64_t from_number, SimTime sent_from,
+                          SimTime ends_after, F&& f) const;
 
   Scheduler& scheduler_;
   const std::vector<Phy*>& phys_;
