@@ -39,6 +39,9 @@ WORKLOADS = {
     "paper200": paper(200, False),
     "paper400": paper(400, False),
     "paper400-feedback": paper(400, True),
+    # Issue 13's large sizes, as a user runs them (feedback on); use a short --sim-s.
+    "paper1600-feedback": paper(1600, True),
+    "paper3200-feedback": paper(3200, True),
     "wireless": (os.path.join(ROOT, "configs", "wireless.yaml"), []),
 }
 
