@@ -10,6 +10,10 @@ namespace swarmnet {
 void InprocChannel::AlignedFree::operator()(void* p) const { std::free(p); }
 
 InprocChannel::InprocChannel(std::uint64_t ring_bytes, const WaitPolicy& policy)
+    : InprocChannel(ring_bytes, policy, policy) {}
+
+InprocChannel::InprocChannel(std::uint64_t ring_bytes, const WaitPolicy& robot_policy,
+                             const WaitPolicy& network_policy)
     : ring_bytes_(ring_bytes) {
   const std::size_t one = SpscRing::footprint(ring_bytes);
   memory_.reset(std::aligned_alloc(kCacheLineBytes, 2 * one));
@@ -19,8 +23,8 @@ InprocChannel::InprocChannel(std::uint64_t ring_bytes, const WaitPolicy& policy)
   SpscRing to_robot = SpscRing::create(base + one, ring_bytes);
   const std::string description =
       "in-process ring, " + std::to_string(ring_bytes >> 10U) + " KiB each way";
-  robot_end_ = std::make_unique<RingTransport>(to_network, to_robot, policy, description);
-  network_end_ = std::make_unique<RingTransport>(to_robot, to_network, policy, description);
+  robot_end_ = std::make_unique<RingTransport>(to_network, to_robot, robot_policy, description);
+  network_end_ = std::make_unique<RingTransport>(to_robot, to_network, network_policy, description);
 }
 
 }  // namespace swarmnet

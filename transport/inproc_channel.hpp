@@ -14,6 +14,10 @@ class InprocChannel {
   // `ring_bytes`: storage of each ring, a power of two.
   explicit InprocChannel(std::uint64_t ring_bytes = std::uint64_t{1} << 20,
                          const WaitPolicy& policy = {});
+  // Each end waits under its own policy (the two halves are different threads: each end's
+  // peer_cpu reads the other half's thread).
+  InprocChannel(std::uint64_t ring_bytes, const WaitPolicy& robot_policy,
+                const WaitPolicy& network_policy);
 
   [[nodiscard]] std::uint64_t ring_bytes() const { return ring_bytes_; }
   RingTransport& robot_end() { return *robot_end_; }

@@ -192,10 +192,10 @@ TEST(PeerFailure, HungNetworkHalfIsDetectedByTheStepTimeout) {
 }
 
 // A network half that computes for longer than the step timeout is slow, not hung: the robot
-// half keeps waiting while the child uses the CPU. The fixture's node 0 computes for 0.4 s of
-// CPU every 0.1 simulated s; the step timeout is 0.15 s.
+// half keeps waiting while the child (or, in process, the network thread) uses the CPU. The
+// fixture's node 0 computes for 0.4 s of CPU every 0.1 simulated s; the step timeout is 0.15 s.
 TEST(PeerFailure, ANetworkHalfComputingPastTheStepTimeoutIsWaitedFor) {
-  for (const std::string transport : {"shm", "uds"}) {
+  for (const std::string transport : {"shm", "uds", "inproc"}) {
     TempDir dir;
     const std::string out = (dir.path() / "run").string();
     const CommandResult result = run_swarmnet(
@@ -208,6 +208,26 @@ TEST(PeerFailure, ANetworkHalfComputingPastTheStepTimeoutIsWaitedFor) {
     EXPECT_EQ(result.exit_code, 0) << transport << ": " << result.output;
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "run" / "summary.json")) << transport;
   }
+}
+
+// In process, a network thread that stops computing is still found hung: the fixture's node 0
+// sleeps 3 s without computing under a 0.2 s step timeout. The robot half gives up within two
+// timeouts of the wait's start, and the run ends once the thread wakes and sees the link closed.
+TEST(PeerFailure, AnInProcessNetworkHalfThatStopsComputingIsFoundHung) {
+  TempDir dir;
+  const std::string out = (dir.path() / "run").string();
+  const CommandResult result =
+      run_swarmnet("run " SWARMNET_SOURCE_DIR
+                   "/configs/quickstart.yaml --quiet --transport inproc "
+                   "--step-timeout 0.2 --set duration_s=0.5 --set "
+                   "'plugin_paths=[\"" SWARMNET_TEST_FIXTURE_DIR
+                   "\"]' --set 'network.routing={\"plugin\": \"busy_routing\", \"params\": "
+                   "{\"period_s\": 0.1, \"busy_ms\": 0, \"sleep_ms\": 3000}}' --out " +
+                   out);
+  EXPECT_NE(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("no answer within the step timeout; it hangs"), std::string::npos)
+      << result.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "run" / "summary.json"));
 }
 
 TEST(PeerFailure, TerminationSignalStopsBothHalvesCleanly) {

@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <thread>
 
 #include "coupling/child_process.hpp"
@@ -49,7 +50,8 @@ constexpr std::chrono::milliseconds kStopGrace{2000};
 
 // `child`: the network half's process, when this half started it. Its CPU time then tells a
 // long step from a hang: the step timeout counts only time in which the child did not compute.
-// A remote or in-process half has no process of ours to look at: the timeout is a fixed bound.
+// A remote half has no process of ours to look at: the timeout is a fixed bound. (An in-process
+// half is a thread: InprocLink reads its CPU clock.)
 WaitPolicy policy_with(const LinkOptions& options, ChildProcess* child) {
   WaitPolicy policy;
   policy.timeout = options.step_timeout;
@@ -71,7 +73,7 @@ class InprocLink final : public NetworkLink {
   // network thread, started after that, is the loader's only user from then on.
   InprocLink(const Scenario& scenario, PluginLoader& loader, const std::filesystem::path& run_dir,
              const LinkOptions& options)
-      : channel_(options.ring_bytes, policy_with(options, nullptr)),
+      : channel_(options.ring_bytes, robot_end_policy(options), network_end_policy(options)),
         network_channel_(channel_.network_end(), "the robot half") {
     thread_ = std::thread([this, &scenario, &loader, run_dir] {
       try {
@@ -83,6 +85,8 @@ class InprocLink final : public NetworkLink {
         error_ = error.what();
       }
     });
+    network_thread_.store(thread_.native_handle());
+    network_thread_known_.store(true);
   }
   ~InprocLink() override {
     if (thread_.joinable()) {
@@ -100,6 +104,26 @@ class InprocLink final : public NetworkLink {
   }
 
  private:
+  // A step that takes the network thread longer than the step timeout is slow, not hung, while
+  // that thread computes: the robot end reads its CPU clock, as it reads a child's CPU time.
+  WaitPolicy robot_end_policy(const LinkOptions& options) {
+    WaitPolicy policy = policy_with(options, nullptr);
+    policy.peer_cpu = [this]() -> std::chrono::nanoseconds {
+      if (!network_thread_known_.load()) return {};
+      return thread_cpu_time(network_thread_.load());
+    };
+    return policy;
+  }
+  // Likewise the network end for the robot half: the thread that opens the link runs it.
+  static WaitPolicy network_end_policy(const LinkOptions& options) {
+    WaitPolicy policy = policy_with(options, nullptr);
+    policy.peer_cpu = [robot = pthread_self()] { return thread_cpu_time(robot); };
+    return policy;
+  }
+
+  // Declared before channel_, whose robot end reads them.
+  std::atomic<pthread_t> network_thread_{};
+  std::atomic<bool> network_thread_known_{false};
   InprocChannel channel_;
   StepChannel network_channel_;
   std::thread thread_;

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdint>
+#include <ctime>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -25,6 +26,14 @@ std::chrono::nanoseconds process_cpu_time(pid_t pid) {
   if (!(fields >> user >> system)) return {};
   static const auto ticks_per_second = static_cast<std::uint64_t>(::sysconf(_SC_CLK_TCK));
   return std::chrono::nanoseconds((user + system) * 1'000'000'000ULL / ticks_per_second);
+}
+
+std::chrono::nanoseconds thread_cpu_time(pthread_t thread) {
+  clockid_t clock{};
+  if (pthread_getcpuclockid(thread, &clock) != 0) return {};
+  timespec t{};
+  if (clock_gettime(clock, &t) != 0) return {};
+  return std::chrono::seconds(t.tv_sec) + std::chrono::nanoseconds(t.tv_nsec);
 }
 
 }  // namespace swarmnet
