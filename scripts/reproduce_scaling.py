@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The reference study's scaling experiment (section V-A, Fig. 4) with SwarmNet.
 
-Runs the sweep configs/sweeps/paper-scaling.yaml (configs/paper/evaluation.yaml for 25 to 3200
+Runs the sweep configs/sweeps/paper-scaling.yaml (configs/paper/evaluation.yaml for 25 to 6400
 robots at constant density; the arena's side and the simulated duration are linked to the robot
 count) with `swarmnet sweep`, which is resumable, then writes into the sweep's directory:
   scaling.png  CPU seconds per simulated second of each half, and the real-time factor, against
