@@ -104,7 +104,9 @@ TEST(FarSignalIndex, FarByReceiverListsEveryFarLinkByAscendingReceiver) {
   for (const std::uint32_t nodes : {1U, 2U, 63U, 64U, 65U, 127U, 128U, 129U, 200U, 1000U}) {
     for (int round = 0; round < 30; ++round) {
       random_links(random, nodes, set);
-      std::vector<std::uint32_t> scratch(nodes, 0xdeadbeefU);
+      FarIndexScratch scratch(nodes);
+      scratch.link_of_receiver.assign(nodes, 0xdeadbeefU);
+      scratch.has_far_link.assign(nodes / 64 + 1, ~std::uint64_t{0});  // stale bits
       set.index_far(scratch);
       // Exactly the far links, receivers ascending, each with its link and that link's units.
       std::vector<FarLink> expected;
@@ -128,7 +130,7 @@ TEST(FarSignalIndex, FarByReceiverListsEveryFarLinkByAscendingReceiver) {
 
 TEST(FarSignalIndex, AnEmptyOrNearOnlyLinkSetHasNoFarLink) {
   ChannelLinks set;
-  std::vector<std::uint32_t> scratch(130);
+  FarIndexScratch scratch(130);
   set.index_far(scratch);
   EXPECT_TRUE(set.far_by_receiver.empty());
   set.links.push_back(ChannelLink{SimTime{5}, 64, false, nullptr, -60.0, 1e-6, 0});
@@ -262,7 +264,7 @@ std::shared_ptr<const ChannelLinks> make_links(const std::vector<Vec2>& position
   std::sort(set->links.begin(), set->links.end(), [](const ChannelLink& a, const ChannelLink& b) {
     return a.delay != b.delay ? a.delay < b.delay : a.receiver < b.receiver;
   });
-  std::vector<std::uint32_t> scratch(positions.size());
+  FarIndexScratch scratch(positions.size());
   set->index_far(scratch);
   return set;
 }
@@ -420,7 +422,7 @@ class FarSignalsAtOneReceiver : public ::testing::Test {
     const bool is_far = is_far_signal(config_, dbm, mw);
     set->links.push_back(
         ChannelLink{us(1), 0, is_far, phys_[0], dbm, mw, is_far ? far_->units(mw) : 0});
-    std::vector<std::uint32_t> scratch(kNodes);
+    FarIndexScratch scratch(kNodes);
     set->index_far(scratch);
     scheduler_.run_until(at);
     far_->frame_sent(next_uid_++, duration, scheduler_.reserve_sequences(2), std::move(set));

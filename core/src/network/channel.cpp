@@ -40,7 +40,7 @@ Channel::Channel(const NetworkSettings& settings, PropagationChain chain, Schedu
                 settings.network.phy.model == PhyModel::sinr && cache_links_),
       is_far_(settings.network.phy),
       phys_(node_count, nullptr),
-      link_of_receiver_(node_count),
+      far_index_scratch_(node_count),
       positions_(node_count, Vec2::Zero()),
       arena_bounds_{0.0, 0.0, settings.arena.width_m, settings.arena.height_m},
       step_links_(node_count) {
@@ -185,7 +185,7 @@ void Channel::compute_links(NodeId transmitter, std::uint64_t uid, ChannelLinks&
   for (const ArrivalKey& key : keys) sorted.push_back(links[key.link]);
   links.swap(sorted);
   link_set.index_near();
-  if (far_lazy_) link_set.index_far(link_of_receiver_);
+  if (far_lazy_) link_set.index_far(far_index_scratch_);
 }
 
 void Channel::remember_on_air(const Frame& frame, SimTime duration) {

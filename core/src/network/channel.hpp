@@ -169,7 +169,7 @@ class Channel final : public QuietSignalSource {
     NodeId receiver;
     std::uint32_t link;
   };
-  mutable std::vector<std::uint32_t> link_of_receiver_;
+  mutable FarIndexScratch far_index_scratch_;
   mutable std::vector<ArrivalKey> arrival_keys_;
   mutable std::vector<Link> sorted_links_;
   std::vector<Vec2> positions_;

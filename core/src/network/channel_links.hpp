@@ -34,6 +34,14 @@ struct FarLink {
   std::int64_t units;  // the link's far_units
 };
 
+// ChannelLinks::index_far's working space, kept by whoever indexes many link sets (the channel),
+// so that link sets, shared while their frames are on the air, do not carry it.
+struct FarIndexScratch {
+  explicit FarIndexScratch(std::size_t nodes) : link_of_receiver(nodes) {}
+  std::vector<std::uint32_t> link_of_receiver;  // per receiver: any content, left changed
+  std::vector<std::uint64_t> has_far_link;      // one bit per receiver
+};
+
 struct ChannelLinks {
   std::vector<ChannelLink> links;  // by (delay, receiver): arrival order
   // The far links by receiver, ascending (the order in which the far-signal bookkeeping visits
@@ -42,7 +50,6 @@ struct ChannelLinks {
   // The links that are not far, by index in arrival order: the fan-out's two streams walk these
   // (about 9 of 190 links in the study's scenario) instead of skipping the far ones one by one.
   std::vector<std::uint32_t> near;
-  std::vector<std::uint64_t> far_bits;  // index_far's scratch: which receivers have a far link
 
   void clear() {
     links.clear();
@@ -56,21 +63,21 @@ struct ChannelLinks {
       if (!links[i].far) near.push_back(i);
     }
   }
-  // Fills the far-link index from links, for receivers numbered below the size of `scratch`
-  // (any content; left changed).
-  void index_far(std::vector<std::uint32_t>& scratch) {
-    far_bits.assign((scratch.size() + 63) / 64, 0);
+  // Fills the far-link index from links, for receivers numbered below `scratch`'s node count.
+  void index_far(FarIndexScratch& scratch) {
+    std::vector<std::uint64_t>& has_far = scratch.has_far_link;
+    has_far.assign((scratch.link_of_receiver.size() + 63) / 64, 0);
     for (std::uint32_t i = 0; i < links.size(); ++i) {
       if (!links[i].far) continue;
-      far_bits[links[i].receiver / 64] |= bit(links[i].receiver);
-      scratch[links[i].receiver] = i;
+      has_far[links[i].receiver / 64] |= bit(links[i].receiver);
+      scratch.link_of_receiver[links[i].receiver] = i;
     }
     // In receiver order, by walking the bits.
     far_by_receiver.clear();
-    for (std::size_t w = 0; w < far_bits.size(); ++w) {
-      for (std::uint64_t bits = far_bits[w]; bits != 0; bits &= bits - 1) {
+    for (std::size_t w = 0; w < has_far.size(); ++w) {
+      for (std::uint64_t bits = has_far[w]; bits != 0; bits &= bits - 1) {
         const auto receiver = static_cast<NodeId>(w * 64 + std::countr_zero(bits));
-        const std::uint32_t link = scratch[receiver];
+        const std::uint32_t link = scratch.link_of_receiver[receiver];
         far_by_receiver.push_back(FarLink{receiver, link, links[link].far_units});
       }
     }

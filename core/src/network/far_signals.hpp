@@ -110,7 +110,8 @@ class FarSignals final : public FarSignalSource {
   double units_per_mw_;
   std::int64_t hot_units_;
   std::vector<Receiver> receivers_;
-  std::deque<AirFrame> frames_;   // by time sent
+  std::deque<AirFrame> frames_;   // by time sent, numbered consecutively: frames_[i] is number
+                                  // oldest_number() + i
   std::size_t counted_from_ = 0;  // frames_[i] for i below it no longer count
   std::uint64_t next_number_ = 0;
   SimTime longest_reach_{};  // the largest propagation delay of a kept frame's links
