@@ -39,7 +39,8 @@ WORKLOADS = {
     "paper200": paper(200, False),
     "paper400": paper(400, False),
     "paper400-feedback": paper(400, True),
-    # Issue 13's large sizes, as a user runs them (feedback on); use a short --sim-s.
+    # Issue 13's large sizes with layer-2 feedback on (the paper defaults), in process as every
+    # workload here; use a short --sim-s.
     "paper1600-feedback": paper(1600, True),
     "paper3200-feedback": paper(3200, True),
     "wireless": (os.path.join(ROOT, "configs", "wireless.yaml"), []),

@@ -15,7 +15,7 @@ namespace swarmnet {
 std::chrono::nanoseconds process_cpu_time(pid_t pid);
 
 // CPU time of `thread`, a thread of this process (its CPU clock), or 0 when it cannot be read
-// (the thread has ended).
+// (the thread has ended). `thread` must not have been joined yet.
 std::chrono::nanoseconds thread_cpu_time(pthread_t thread);
 
 }  // namespace swarmnet
