@@ -191,20 +191,42 @@ TEST(PeerFailure, HungNetworkHalfIsDetectedByTheStepTimeout) {
   expect_nothing_left(dir, run.pid());
 }
 
+// The quickstart scenario for 0.5 simulated s under `step_timeout_s`, with the test fixtures on
+// the plugin path and one more `--set` (a fixture standing in for a slow or stuck half).
+CommandResult run_with_fixture(const TempDir& dir, const std::string& transport,
+                               const std::string& step_timeout_s, const std::string& fixture_set) {
+  return run_swarmnet("run " SWARMNET_SOURCE_DIR "/configs/quickstart.yaml --quiet --transport " +
+                      transport + " --step-timeout " + step_timeout_s +
+                      " --set duration_s=0.5 --set 'plugin_paths=[\"" SWARMNET_TEST_FIXTURE_DIR
+                      "\"]' --set '" +
+                      fixture_set + "' --out " + (dir.path() / "run").string());
+}
+
 // A network half that computes for longer than the step timeout is slow, not hung: the robot
 // half keeps waiting while the child (or, in process, the network thread) uses the CPU. The
 // fixture's node 0 computes for 0.4 s of CPU every 0.1 simulated s; the step timeout is 0.15 s.
 TEST(PeerFailure, ANetworkHalfComputingPastTheStepTimeoutIsWaitedFor) {
   for (const std::string transport : {"shm", "uds", "inproc"}) {
     TempDir dir;
-    const std::string out = (dir.path() / "run").string();
-    const CommandResult result = run_swarmnet(
-        "run " SWARMNET_SOURCE_DIR "/configs/quickstart.yaml --quiet --transport " + transport +
-        " --step-timeout 0.15 --set duration_s=0.5 --set "
-        "'plugin_paths=[\"" SWARMNET_TEST_FIXTURE_DIR
-        "\"]' --set 'network.routing={\"plugin\": \"busy_routing\", \"params\": "
-        "{\"period_s\": 0.1, \"busy_ms\": 400}}' --out " +
-        out);
+    const CommandResult result =
+        run_with_fixture(dir, transport, "0.15",
+                         R"(network.routing={"plugin": "busy_routing", )"
+                         R"("params": {"period_s": 0.1, "busy_ms": 400}})");
+    EXPECT_EQ(result.exit_code, 0) << transport << ": " << result.output;
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "run" / "summary.json")) << transport;
+  }
+}
+
+// Likewise the other way: a robot half that computes for longer than the step timeout is slow,
+// not hung, for the network half that waits for its next step (the child reads its parent's CPU
+// time; in process, the network thread reads the robot thread's CPU clock). The fixture's robot 0
+// computes for 0.4 s of CPU at every 0.1 s step; the step timeout is 0.15 s.
+TEST(PeerFailure, ARobotHalfComputingPastTheStepTimeoutIsWaitedFor) {
+  for (const std::string transport : {"shm", "inproc"}) {
+    TempDir dir;
+    const CommandResult result = run_with_fixture(
+        dir, transport, "0.15",
+        R"(robots.controllers=[{"plugin": "busy_controller", "params": {"busy_ms": 400}}])");
     EXPECT_EQ(result.exit_code, 0) << transport << ": " << result.output;
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "run" / "summary.json")) << transport;
   }
@@ -215,15 +237,10 @@ TEST(PeerFailure, ANetworkHalfComputingPastTheStepTimeoutIsWaitedFor) {
 // timeouts of the wait's start, and the run ends once the thread wakes and sees the link closed.
 TEST(PeerFailure, AnInProcessNetworkHalfThatStopsComputingIsFoundHung) {
   TempDir dir;
-  const std::string out = (dir.path() / "run").string();
   const CommandResult result =
-      run_swarmnet("run " SWARMNET_SOURCE_DIR
-                   "/configs/quickstart.yaml --quiet --transport inproc "
-                   "--step-timeout 0.2 --set duration_s=0.5 --set "
-                   "'plugin_paths=[\"" SWARMNET_TEST_FIXTURE_DIR
-                   "\"]' --set 'network.routing={\"plugin\": \"busy_routing\", \"params\": "
-                   "{\"period_s\": 0.1, \"busy_ms\": 0, \"sleep_ms\": 3000}}' --out " +
-                   out);
+      run_with_fixture(dir, "inproc", "0.2",
+                       R"(network.routing={"plugin": "busy_routing", )"
+                       R"("params": {"period_s": 0.1, "busy_ms": 0, "sleep_ms": 3000}})");
   EXPECT_NE(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find("no answer within the step timeout; it hangs"), std::string::npos)
       << result.output;
