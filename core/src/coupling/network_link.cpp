@@ -3,7 +3,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <thread>
 
 #include "coupling/child_process.hpp"
@@ -85,8 +84,6 @@ class InprocLink final : public NetworkLink {
         error_ = error.what();
       }
     });
-    network_thread_.store(thread_.native_handle());
-    network_thread_known_.store(true);
   }
   ~InprocLink() override {
     if (thread_.joinable()) {
@@ -105,12 +102,13 @@ class InprocLink final : public NetworkLink {
 
  private:
   // A step that takes the network thread longer than the step timeout is slow, not hung, while
-  // that thread computes: the robot end reads its CPU clock, as it reads a child's CPU time.
+  // that thread computes: the robot end reads its CPU clock, as it reads a child's CPU time. Only
+  // the robot half's thread waits on this end, and it also starts and joins thread_.
   WaitPolicy robot_end_policy(const LinkOptions& options) {
     WaitPolicy policy = policy_with(options, nullptr);
     policy.peer_cpu = [this]() -> std::chrono::nanoseconds {
-      if (!network_thread_known_.load()) return {};
-      return thread_cpu_time(network_thread_.load());
+      if (!thread_.joinable()) return {};  // not started yet, or joined
+      return thread_cpu_time(thread_.native_handle());
     };
     return policy;
   }
@@ -121,9 +119,6 @@ class InprocLink final : public NetworkLink {
     return policy;
   }
 
-  // Declared before channel_, whose robot end reads them.
-  std::atomic<pthread_t> network_thread_{};
-  std::atomic<bool> network_thread_known_{false};
   InprocChannel channel_;
   StepChannel network_channel_;
   std::thread thread_;

@@ -107,7 +107,7 @@ void FarSignals::begin_events(NodeId receiver) {
   const EventKey horizon = phys_[receiver]->far_history_start();
   std::vector<FarSignal>& signals = scratch_;
   signals.clear();
-  for_each_far_frame(r, r.lazy_from, SimTime::min(), horizon.time,
+  for_each_far_frame(receiver, SimTime::min(), horizon.time,
                      [&](const AirFrame& frame, std::size_t index) {
                        const FarSignal signal = signal_of(frame, index);
                        if (horizon < signal.end) signals.push_back(signal);
@@ -135,12 +135,15 @@ void FarSignals::hold_far_events(NodeId receiver, bool hold) {
 }
 
 template <typename F>
-void FarSignals::for_each_far_frame(const Receiver& r, std::uint64_t from_number, SimTime sent_from,
-                                    SimTime ends_after, F&& f) const {
+void FarSignals::for_each_far_frame(NodeId receiver, SimTime sent_from, SimTime ends_after,
+                                    F&& f) const {
+  const Receiver& r = receivers_[receiver];
+  if (r.hot) return;  // every far signal was handed over
   const std::uint64_t oldest = oldest_number();
   for (std::size_t i = r.frames.size(); i-- > 0;) {
     const FarEntry entry = r.frames[i];
-    if (entry.number < from_number || entry.number < oldest) break;  // so is every earlier one
+    // Handed over (below lazy_from) or no longer kept: so is every earlier one.
+    if (entry.number < r.lazy_from || entry.number < oldest) break;
     const AirFrame& frame = frames_[entry.number - oldest];
     if (frame.sent < sent_from) break;
     if (frame.last_end < ends_after) continue;  // over everywhere
@@ -150,11 +153,9 @@ void FarSignals::for_each_far_frame(const Receiver& r, std::uint64_t from_number
 
 void FarSignals::far_starts(NodeId receiver, EventKey from, EventKey to,
                             std::vector<FarSignal>& out) const {
-  const Receiver& r = receivers_[receiver];
-  if (r.hot) return;  // every far signal was handed over
   const std::size_t first = out.size();
   // A frame's signals start at most longest_reach_ after it was sent.
-  for_each_far_frame(r, r.lazy_from, from.time - longest_reach_, from.time,
+  for_each_far_frame(receiver, from.time - longest_reach_, from.time,
                      [&](const AirFrame& frame, std::size_t index) {
                        const FarSignal signal = signal_of(frame, index);
                        if (from < signal.start && signal.start < to) out.push_back(signal);
@@ -164,9 +165,7 @@ void FarSignals::far_starts(NodeId receiver, EventKey from, EventKey to,
 
 void FarSignals::far_signals_during(NodeId receiver, EventKey from, EventKey to,
                                     std::vector<FarSignal>& out) const {
-  const Receiver& r = receivers_[receiver];
-  if (r.hot) return;
-  for_each_far_frame(r, r.lazy_from, from.time - longest_reach_ - longest_duration_, from.time,
+  for_each_far_frame(receiver, from.time - longest_reach_ - longest_duration_, from.time,
                      [&](const AirFrame& frame, std::size_t index) {
                        const FarSignal signal = signal_of(frame, index);
                        if (signal.start < to && from < signal.end) out.push_back(signal);

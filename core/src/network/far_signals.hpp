@@ -98,12 +98,11 @@ class FarSignals final : public FarSignalSource {
   void retire(SimTime now);
   void begin_events(NodeId receiver);
   void end_events(NodeId receiver);
-  // Calls f(frame, link index) for each kept frame numbered `from_number` or later that reaches
-  // `receiver` with a far signal, was sent at or after `sent_from` and is on the air somewhere at
-  // or after `ends_after`, latest first.
+  // Calls f(frame, link index) for each kept frame not handed to `receiver` (none while it is
+  // hot) that reaches it with a far signal, was sent at or after `sent_from` and is on the air
+  // somewhere at or after `ends_after`, latest first.
   template <typename F>
-  void for_each_far_frame(const Receiver& r, std::uint64_t from_number, SimTime sent_from,
-                          SimTime ends_after, F&& f) const;
+  void for_each_far_frame(NodeId receiver, SimTime sent_from, SimTime ends_after, F&& f) const;
 
   Scheduler& scheduler_;
   const std::vector<Phy*>& phys_;
