@@ -94,6 +94,30 @@ TEST(NetworkChannel, OnlyNodesWithinRangeHearAFrame) {
   EXPECT_EQ(out.report["packets"]["broadcast_deliveries"], 2);
 }
 
+TEST(NetworkChannel, ReceiversMillionsOfKilometresAwayHearAFrameInArrivalOrder) {
+  // Delays beyond 2^32 ns do not fit the channel's packed sort keys: they must still sort.
+  PluginLoader loader;
+  NetworkSettings settings = make_settings(loader, 5, "ideal_mac", "direct");
+  set_param(settings.network.propagation[0], "unlimited", true);
+  const double metres_per_ns = kSpeedOfLightMps * 1e-9;
+  const std::vector<Vec2> positions = {{0, 0},
+                                       {4.5e9 * metres_per_ns, 0},    // 4.5 s: past 2^32 ns
+                                       {4.0e9 * metres_per_ns, 0},    // 4.0 s
+                                       {10, 0},                       // 33 ns
+                                       {-4.0e9 * metres_per_ns, 0}};  // 4.0 s, as node 2
+  const auto out =
+      test::run(settings, loader,
+                test::fixed_batches(settings, positions, 50, {test::message(0, 0, kBroadcast)}));
+  ASSERT_EQ(out.deliveries.size(), 4U);
+  // By arrival; the two at the same distance by id.
+  EXPECT_EQ(out.deliveries[0].receiver, 3U);
+  EXPECT_EQ(out.deliveries[1].receiver, 2U);
+  EXPECT_EQ(out.deliveries[2].receiver, 4U);
+  EXPECT_EQ(out.deliveries[3].receiver, 1U);
+  EXPECT_EQ(out.deliveries[1].delivered_at, out.deliveries[2].delivered_at);
+  EXPECT_GT(out.deliveries[3].delivered_at - out.deliveries[1].delivered_at, from_seconds(0.49));
+}
+
 bool same_deliveries(const std::vector<Delivery>& a, const std::vector<Delivery>& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i) {
