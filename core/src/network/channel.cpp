@@ -188,7 +188,8 @@ void Channel::compute_links(NodeId transmitter, std::uint64_t uid, ChannelLinks&
   if (packed) {
     std::sort(keys.begin(), keys.end());
   } else {
-    // Delays of 4.3 s and more (nodes a million km apart) do not fit: compare the links' own.
+    // Delays of 4.3 s and more (nodes a million km apart), or negative ones from positions that
+    // are not finite, do not fit: compare the links' own.
     std::sort(keys.begin(), keys.end(), [&](std::uint64_t a, std::uint64_t b) {
       const SimTime delay_a = links[link_of[receiver_of(a)]].delay;
       const SimTime delay_b = links[link_of[receiver_of(b)]].delay;
