@@ -41,7 +41,6 @@ Channel::Channel(const NetworkSettings& settings, PropagationChain chain, Schedu
       is_far_(settings.network.phy),
       phys_(node_count, nullptr),
       far_index_scratch_(node_count),
-      link_of_receiver_(node_count),
       positions_(node_count, Vec2::Zero()),
       arena_bounds_{0.0, 0.0, settings.arena.width_m, settings.arena.height_m},
       step_links_(node_count) {
@@ -175,7 +174,7 @@ void Channel::compute_links(NodeId transmitter, std::uint64_t uid, ChannelLinks&
   // delay above the receiver, then the links gathered in that order: moving 48-byte links in the
   // sort cost more than the sort itself, and one integer compares faster than a pair.
   std::vector<std::uint64_t>& keys = arrival_keys_;
-  std::vector<std::uint32_t>& link_of = link_of_receiver_;
+  std::vector<std::uint32_t>& link_of = far_index_scratch_.link_of_receiver;  // index_far's too
   keys.clear();
   bool packed = true;
   for (std::uint32_t i = 0; i < links.size(); ++i) {

@@ -166,7 +166,6 @@ class Channel final : public QuietSignalSource {
   // compute_links' scratch.
   mutable FarIndexScratch far_index_scratch_;
   mutable std::vector<std::uint64_t> arrival_keys_;
-  mutable std::vector<std::uint32_t> link_of_receiver_;  // a receiver's link, while sorting
   mutable std::vector<Link> sorted_links_;
   std::vector<Vec2> positions_;
   std::shared_ptr<const std::vector<Vec2>> positions_snapshot_;  // made at the step's first frame

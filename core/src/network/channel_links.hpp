@@ -34,8 +34,9 @@ struct FarLink {
   std::int64_t units;  // the link's far_units
 };
 
-// ChannelLinks::index_far's working space, kept by whoever indexes many link sets (the channel),
-// so that link sets, shared while their frames are on the air, do not carry it.
+// ChannelLinks::index_far's working space, kept by whoever indexes many link sets (the channel,
+// whose arrival sort uses link_of_receiver too), so that link sets, shared while their frames are
+// on the air, do not carry it.
 struct FarIndexScratch {
   explicit FarIndexScratch(std::size_t nodes) : link_of_receiver(nodes) {}
   std::vector<std::uint32_t> link_of_receiver;  // per receiver: any content, left changed
