@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <ostream>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "swarmnet/units.hpp"
@@ -30,6 +31,7 @@ class MobilityTraceWriter {
   double step_s_;
   std::vector<Vec2> previous_;
   std::uint64_t previous_step_ = 0;
+  std::string text_;  // one sample's lines, written at once (capacity kept)
 };
 
 }  // namespace swarmnet
