@@ -151,6 +151,24 @@ TEST(ScenarioLoader, HeaderFailureCcaIsReadAndCheckedAgainstItsChoices) {
   }
 }
 
+TEST(ScenarioLoader, InterferenceFloorMayLieAboveTheNoise) {
+  // Above 0 dB the floor is above the noise (11.99 ignores every undetectable signal); past
+  // 100 dB it is refused with its range.
+  EXPECT_EQ(load_with(kFull, {"network.phy.interference_floor_db=11.99"})
+                .network.phy.interference_floor_db,
+            11.99);
+  try {
+    (void)load_with(kFull, {"network.phy.interference_floor_db=150"});
+    FAIL() << "a floor of 150 dB was accepted";
+  } catch (const ScenarioError& error) {
+    const std::string text = error.what();
+    EXPECT_NE(text.find("network.phy.interference_floor_db: 150 is out of range; expected real "
+                        "-100..100 (dB)"),
+              std::string::npos)
+        << text;
+  }
+}
+
 // network.seed seeds the network half alone; absent, the master seed does, and a negative one is
 // refused with its key named.
 TEST(ScenarioLoader, NetworkSeedSeedsTheNetworkHalfAndKeepsTheTrafficOnTheMasterSeed) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "network/network_simulator.hpp"
+#include "network/radio_thresholds.hpp"
 #include "network_test_support.hpp"
 #include "outputs/run_summary.hpp"
 #include "swarmnet/wifi_ofdm.hpp"
@@ -227,28 +228,60 @@ TEST(WirelessNetwork, SaturationThroughputMatchesBianchi) {
   }
 }
 
-TEST(WirelessNetwork, CutoffGivesIdenticalResultsWhereItIsExact) {
-  // log_distance (deterministic) + sinr: nodes beyond the cutoff receive less than the
-  // interference floor, which the PHY ignores anyway, so visiting them changes nothing.
-  PluginLoader loader;
+// 80 nodes flooding over 1.5 km with `floor_db` as the interference floor.
+NetworkSettings flooding_field(PluginLoader& loader, double floor_db) {
   NetworkSettings settings = wireless_scenario(loader, 80, "flooding");
   settings.arena.width_m = 1500.0;
   settings.arena.height_m = 1500.0;
+  settings.network.phy.interference_floor_db = floor_db;
   set_param(settings.network.routing, "ttl", std::int64_t{3});
-  const auto batches = test::random_batches(settings, 11, 20, 6, 0.3, 2.0);
+  return settings;
+}
+
+// Runs `batches` with the cutoff on and off, expects the same bytes and a cutoff of about
+// `cutoff_m`, and returns the run with the cutoff.
+test::RunOutput expect_cutoff_exact(NetworkSettings settings, PluginLoader& loader,
+                                    const std::vector<StepBatch>& batches, double cutoff_m) {
   settings.network.channel.cutoff = true;
-  const test::RunOutput with_cutoff = test::run(settings, loader, batches);
+  test::RunOutput with_cutoff = test::run(settings, loader, batches);
   settings.network.channel.cutoff = false;
   const test::RunOutput without = test::run(settings, loader, batches);
   {
     const NetworkSimulator probe(settings, loader, nullptr);
-    EXPECT_NEAR(probe.channel().cutoff_m(), 648.0, 2.0);
+    EXPECT_NEAR(probe.channel().cutoff_m(), cutoff_m, 2.0);
   }
   EXPECT_EQ(with_cutoff.trace, without.trace);
   EXPECT_EQ(with_cutoff.report.dump(), without.report.dump());
-  EXPECT_GT(with_cutoff.report["packets"]["delivered"].get<int>(), 0);
   EXPECT_GT(with_cutoff.report["packets"]["broadcast_deliveries"].get<int>(), 50);
   EXPECT_GT(with_cutoff.report["mac"]["tx_frames"].get<int>(), 100);
+  return with_cutoff;
+}
+
+TEST(WirelessNetwork, CutoffGivesIdenticalResultsWhereItIsExact) {
+  // log_distance (deterministic) + sinr: nodes beyond the cutoff receive less than the
+  // interference floor, which the PHY ignores anyway, so visiting them changes nothing.
+  PluginLoader loader;
+  const NetworkSettings settings = flooding_field(loader, PhyConfig{}.interference_floor_db);
+  const auto batches = test::random_batches(settings, 11, 20, 6, 0.3, 2.0);
+  const test::RunOutput run = expect_cutoff_exact(settings, loader, batches, 648.0);
+  EXPECT_GT(run.report["packets"]["delivered"].get<int>(), 0);
+}
+
+TEST(WirelessNetwork, AFloorAtTheDetectionThresholdIgnoresWhatCannotBeDetectedAndStaysExact) {
+  // interference_floor_db above 0 puts the floor above the noise; at cca_threshold_dbm minus the
+  // noise floor nothing weaker than a detectable frame reaches a PHY, so the cutoff shrinks to
+  // the 120 m detection range, and cutting there must still change nothing.
+  PluginLoader loader;
+  const PhyConfig defaults;
+  const double floor_db = defaults.cca_threshold_dbm - noise_floor_dbm(defaults);
+  EXPECT_NEAR(floor_db, 11.99, 0.01);
+  const NetworkSettings settings = flooding_field(loader, floor_db);
+  const auto batches = test::random_batches(settings, 11, 20, 6, 0.3, 2.0);
+  const test::RunOutput run = expect_cutoff_exact(settings, loader, batches, 120.0);
+  // Against the default floor the same traffic meets less interference: the runs differ.
+  const test::RunOutput default_floor =
+      test::run(flooding_field(loader, defaults.interference_floor_db), loader, batches);
+  EXPECT_NE(run.trace, default_floor.trace);
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 //
 // sinr (sinr_reception.hpp): 802.11a OFDM reception as ns-3.37's YansWifiPhy does it with its
 // defaults.
-//   - Noise floor N = -174 dBm/Hz + 10 log10(bandwidth_hz) + noise_figure_db (-93.97 dBm at
+//   - Noise floor N = -174 dBm/Hz + 10 log10(bandwidth_hz) + noise_figure_db (-93.99 dBm at
 //     20 MHz, 7 dB). Signals weaker than N + interference_floor_db (default -10 dB) are ignored
 //     (DESIGN.md section 7): the channel does not even deliver them, and its cutoff distance is
 //     computed against that floor. Every other arriving signal adds to the interference.

@@ -212,9 +212,12 @@ const KeySpec& scenario_schema() {
             .between(-200, 100).defaults("-82"),
         real_key("preamble_snr_db", "dB", "sinr model: SINR a preamble needs to be detected.")
             .between(-100, 100).defaults("4"),
-        real_key("interference_floor_db", "dB", "sinr model: signals weaker than noise floor + "
-                                                "this are ignored (neither interfere nor sensed).")
-            .between(-100, 0).defaults("-10"),
+        real_key("interference_floor_db", "dB",
+                 "sinr model: signals weaker than noise floor + this are ignored (neither "
+                 "interfere nor sensed). Above 0 the floor is above the noise: at "
+                 "cca_threshold_dbm minus the noise floor (11.99 by default) every signal too "
+                 "weak to be detected is ignored (fast, approximate).")
+            .between(-100, 100).defaults("-10"),
         real_key("sensing_floor_db", "dB",
                  "sinr model: signals weaker than cca_threshold_dbm + this are quiet: they "
                  "interfere but are not carrier-sensed, and cost nothing until a reception needs "
