@@ -42,30 +42,37 @@ std::string setdest_lines(double start_s, double span_s, const std::vector<Vec2>
 }
 
 TEST(MobilityTrace, LinesAreWhatPrintfWritesOnEdgeValues) {
-  // Halves of the sixth decimal (printf rounds the binary value, not the decimal one), zeros of
-  // both signs, values that round up across a power of ten, and the largest finite double.
-  const std::vector<Vec2> first = {
-      {0.0, -0.0},
-      {0.0000005, 0.0000015},
-      {0.0000025, -0.0000005},
-      {999999.9999995, 9.9999995},
-      {-123.4567895, 1e-7},
-      {1e15 + 0.5, -1e-300},
-      {std::numeric_limits<double>::max(), -std::numeric_limits<double>::max()},
-      {3.0, 4.0}};
-  std::vector<Vec2> second = first;
-  second[0] = {0.1, 0.2};
-  second[1] = {1.0000005, 2.5};
-  second[4] = {-123.4567895, 1e-7};  // does not move: no line
-  second[7] = {6.0, 8.0};
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  constexpr double kMax = std::numeric_limits<double>::max();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // Exact binary ties of the sixth decimal (printf rounds them to even), values that carry
+  // across a power of ten, zeros of both signs, the largest doubles, infinities and NaNs.
+  const std::vector<Vec2> first = {{0.0078125, 0.0234375},
+                                   {0.0, -0.0},
+                                   {9.9999996, 999999.9999996},
+                                   {-0.0000005, 0.0000015},
+                                   {1e15 + 0.5, -1e-300},
+                                   {kMax, -kMax},
+                                   {kInf, -kInf},
+                                   {nan, -nan},
+                                   {-123.4567895, 1e-7},
+                                   {3.0, 4.0}};
+  // Every node moves but one, so that each value passes through the setdest lines too.
+  std::vector<Vec2> second(first.rbegin(), first.rend());
+  second[8] = first[8];  // node 8 stays put: no line
   std::ostringstream out;
   MobilityTraceWriter writer(out, 1, 0.1);
   writer.sample(0, first);
   writer.sample(1, second);
-  EXPECT_EQ(out.str(), initial_lines(first) + setdest_lines(0.0, 0.1, first, second));
-  EXPECT_NE(out.str().find("$ns_ at 0.000000 \"$node_(7) setdest 6.000000 8.000000 50.000000\"\n"),
-            std::string::npos);
-  EXPECT_EQ(out.str().find("$node_(4) setdest"), std::string::npos);
+  const std::string text = out.str();
+  EXPECT_EQ(text, initial_lines(first) + setdest_lines(0.0, 0.1, first, second));
+  for (const char* expected : {"$node_(0) set X_ 0.007812\n", "$node_(0) set Y_ 0.023438\n",
+                               "$node_(1) set Y_ -0.000000\n", "$node_(2) set X_ 10.000000\n",
+                               "$node_(2) set Y_ 1000000.000000\n", "$node_(6) set X_ inf\n",
+                               "\"$node_(0) setdest 3.000000 4.000000 "}) {
+    EXPECT_NE(text.find(expected), std::string::npos) << expected;
+  }
+  EXPECT_EQ(text.find("$node_(8) setdest"), std::string::npos);
 }
 
 TEST(MobilityTrace, LinesAreWhatPrintfWritesOnRandomWalks) {
