@@ -276,6 +276,10 @@ TEST(WirelessNetwork, AFloorAtTheDetectionThresholdIgnoresWhatCannotBeDetectedAn
   const double floor_db = defaults.cca_threshold_dbm - noise_floor_dbm(defaults);
   EXPECT_NEAR(floor_db, 11.99, 0.01);
   const NetworkSettings settings = flooding_field(loader, floor_db);
+  // The weakest signal any PHY is handed is then the detection threshold: no far signal exists.
+  EXPECT_NEAR(audibility_threshold_dbm(settings.network.phy), defaults.cca_threshold_dbm, 1e-9);
+  EXPECT_EQ(event_threshold_dbm(settings.network.phy),
+            audibility_threshold_dbm(settings.network.phy));
   const auto batches = test::random_batches(settings, 11, 20, 6, 0.3, 2.0);
   const test::RunOutput run = expect_cutoff_exact(settings, loader, batches, 120.0);
   // Against the default floor the same traffic meets less interference: the runs differ.

@@ -215,8 +215,9 @@ const KeySpec& scenario_schema() {
         real_key("interference_floor_db", "dB",
                  "sinr model: signals weaker than noise floor + this are ignored (neither "
                  "interfere nor sensed). Above 0 the floor is above the noise: at "
-                 "cca_threshold_dbm minus the noise floor (11.99 by default) every signal too "
-                 "weak to be detected is ignored (fast, approximate).")
+                 "cca_threshold_dbm minus the noise floor (11.9897 by default) every signal too "
+                 "weak to be detected is ignored (fast, approximate); higher still, detectable "
+                 "frames are ignored too and the range shrinks.")
             .between(-100, 100).defaults("-10"),
         real_key("sensing_floor_db", "dB",
                  "sinr model: signals weaker than cca_threshold_dbm + this are quiet: they "
