@@ -72,7 +72,7 @@ def main():
         pair("network-seed", SHORT + ["network.seed=1001"], ns3_from=kept)
     except RuntimeError as error:
         failures.append(f"a run with another network.seed could not reuse ns-3's result: {error}")
-    if not refused(lambda: pair("aligned", SHORT, aligned=True, ns3_from=kept),
+    if not refused(lambda: pair("aligned", SHORT, setup="aligned", ns3_from=kept),
                    "its ns-3 run had other options"):
         failures.append("a reuse with other ns-3 options was not refused")
     if not refused(lambda: pair("ns3-run-reused", SHORT, ns3_from=kept, ns3_run=7),

@@ -5,16 +5,18 @@ time of both network halves measured on every row.
 
     python3 tests/validation/run_grid.py --build build [--full] [--duration-s 20]
         [--routing flooding,direct,aodv] [--seed 1 | --seeds 1-8] [--set KEY=VALUE ...]
-        [--ns3-run N] [--aligned] [--extra-rows issue19] [--row N,SIDE_M,RATE_HZ,PAYLOAD_B,SENDERS ...]
+        [--ns3-run N] [--setup default|aligned|static_arp] [--extra-rows issue19] [--row N,SIDE_M,RATE_HZ,PAYLOAD_B,SENDERS ...]
         [--extra-only] [--pdr-points P] [--delay-pct D] [--mac-pct M] [--control-pct C]
         [--out build/validation-grid] [--doc docs/validation.md]
 
 Both sides run as ns-3 users run ns-3 by default: ARP by request and reply (SwarmNet
 `network.arp: ns3`, the replay's default) and AODV with layer-2 feedback (SwarmNet
 `link_layer_feedback: true`); AODV keeps ns-3.37's sequence-number and control-message rules
-(validation_runner.NS3_AODV_RULES) either way. --aligned runs the setup the grid was aligned in
-before issue 19: no ARP frame (SwarmNet `network.arp: static`, the replay's --aligned) and no
-layer-2 feedback (validation_runner.SETUPS).
+(validation_runner.NS3_AODV_RULES) either way. --setup aligned (or --aligned) runs the setup the
+grid was aligned in before issue 19: no ARP frame (SwarmNet `network.arp: static`, the replay's
+--aligned) and no layer-2 feedback; --setup static_arp the default stack with every address
+resolved beforehand on both sides (no ARP frame, layer-2 feedback kept), to tell what of a row's
+difference ARP makes (validation_runner.SETUPS).
 
 Every row sets its robots, arena side, messages per second per sender, payload and share of
 senders explicitly; the table shows all five. --extra-rows issue19 adds, for each protocol of
@@ -117,6 +119,11 @@ def main():
                              "default: each trace's own seed. A grid with another run number "
                              "re-draws ns-3's side over the very same traces (SwarmNet's side is "
                              "unchanged): the spread over such grids is ns-3's own noise")
+    parser.add_argument("--setup", choices=sorted(vr.SETUPS), default="default",
+                        help="default: ns-3's default stack on both sides; aligned: as --aligned; "
+                             "static_arp: the default stack with every address resolved "
+                             "beforehand (SwarmNet network.arp: static, replay --arp-entries "
+                             "permanent), layer-2 feedback kept")
     parser.add_argument("--aligned", action="store_true",
                         help="the setup aligned before issue 19: no ARP frame on either side "
                              "(SwarmNet network.arp: static, the replay's --aligned) and AODV "
@@ -169,7 +176,9 @@ def main():
         print("SwarmNet's 802.11 stack is not available; the SwarmNet side runs the 120 m unit "
               "disk with the ideal MAC" + (":\n  " + reason.replace("\n", "\n  ") if reason else ""))
 
-    setup = vr.setup_name(args.aligned)
+    if args.aligned and args.setup not in ("default", "aligned"):
+        parser.error("--aligned is --setup aligned: give one of them")
+    setup = "aligned" if args.aligned else args.setup
     print(f"setup: {setup} ({describe_setup(setup)})")
     rows_wanted = []
     extra = [spec for name in args.extra_rows for spec in EXTRA_ROWS[name]] + args.row
@@ -211,7 +220,7 @@ def main():
         started = time.monotonic()
         try:
             row = run_row(swarmnet, ns3, scenario, os.path.join(out, name), routing, stack,
-                          overrides, args.seeds, tolerances, args.aligned, args.resume,
+                          overrides, args.seeds, tolerances, setup, args.resume,
                           os.path.join(args.ns3_from, name) if args.ns3_from else None,
                           args.ns3_run)
         except RuntimeError as error:
@@ -277,6 +286,10 @@ def describe_setup(setup):
     if setup == "aligned":
         return ("aligned: no ARP frame on either side (SwarmNet network.arp: static, replay "
                 "--aligned), AODV without layer-2 feedback (link_layer_feedback: false)")
+    if setup == "static_arp":
+        return ("ns-3's default stack with every address resolved beforehand: no ARP frame on "
+                "either side (SwarmNet network.arp: static, replay --arp-entries permanent), AODV "
+                "with layer-2 feedback (link_layer_feedback: true)")
     return ("ns-3's default stack on both sides: ARP (SwarmNet network.arp: ns3, replay "
             "--arp-entries none), AODV with layer-2 feedback (link_layer_feedback: true)")
 
@@ -293,7 +306,7 @@ def seed_list(text):
 
 
 def run_row(swarmnet, ns3, scenario, work_dir, routing, stack, overrides, seeds, tolerances,
-            aligned=False, resume=False, ns3_from=None, ns3_run=None):
+            setup="default", resume=False, ns3_from=None, ns3_run=None):
     """One row: compare.compare()'s row for one seed; for several, the row of the pooled runs,
     with the range of the per-seed delivery differences and every seed's own row."""
     pairs = []
@@ -303,14 +316,14 @@ def run_row(swarmnet, ns3, scenario, work_dir, routing, stack, overrides, seeds,
         if ns3_from:
             kept = ns3_from if len(seeds) == 1 else os.path.join(ns3_from, f"seed{seed}")
         pairs.append(vr.run_pair(swarmnet, ns3, scenario, seed_dir, routing, stack, overrides,
-                                 seed, log=lambda s: None, aligned=aligned, resume=resume,
+                                 seed, log=lambda s: None, setup=setup, resume=resume,
                                  ns3_from=kept, ns3_run=ns3_run))
     if len(pairs) == 1:
-        return vr.compared(*pairs[0], routing, stack, tolerances, aligned)
-    per_seed = [dict(vr.compared(*pair, routing, stack, tolerances, aligned), seed=seed)
+        return vr.compared(*pairs[0], routing, stack, tolerances, setup)
+    per_seed = [dict(vr.compared(*pair, routing, stack, tolerances, setup), seed=seed)
                 for seed, pair in zip(seeds, pairs)]
     row = vr.compared(compare.pool([p[0] for p in pairs]), compare.pool([p[1] for p in pairs]),
-                      routing, stack, tolerances, aligned)
+                      routing, stack, tolerances, setup)
     diffs = [r["pdr_diff_points"] for r in per_seed]
     interval = student_interval(swarmnet, diffs)
     row.update(seeds=seeds, pdr_diff_points_range=[min(diffs), max(diffs)],

@@ -36,16 +36,22 @@ DISK_NETWORK = {
 }
 
 
-# Two configurations (docs/validation.md, "Default stack and aligned setup"):
+# Three configurations (docs/validation.md, "Default stack and aligned setup"):
 #
-# default  both sides as ns-3 users run ns-3: ARP by request and reply (SwarmNet `network.arp:
-#          ns3`; the replay's default, --arp-entries none) and AODV taking layer-2 feedback (a
-#          unicast frame dropped at the retry limit, an ARP resolution given up), which ns-3's AODV
-#          gets from the MAC's DroppedMpdu trace once ARP has resolved its neighbours.
-# aligned  the setup the grid was aligned in before issue 19: no ARP frame on either side
-#          (SwarmNet `network.arp: static`, the replay's --aligned: NeighborCacheHelper's
-#          auto-generated entries) and no layer-2 feedback (with auto-generated entries ns-3.37's
-#          AODV cannot map a neighbour to its MAC address, so no dropped frame reaches it).
+# default     both sides as ns-3 users run ns-3: ARP by request and reply (SwarmNet `network.arp:
+#             ns3`; the replay's default, --arp-entries none) and AODV taking layer-2 feedback (a
+#             unicast frame dropped at the retry limit, an ARP resolution given up), which ns-3's
+#             AODV gets from the MAC's DroppedMpdu trace once ARP has resolved its neighbours.
+# aligned     the setup the grid was aligned in before issue 19: no ARP frame on either side
+#             (SwarmNet `network.arp: static`, the replay's --aligned: NeighborCacheHelper's
+#             auto-generated entries) and no layer-2 feedback (with auto-generated entries
+#             ns-3.37's AODV cannot map a neighbour to its MAC address, so no dropped frame
+#             reaches it).
+# static_arp  the default stack without ARP's frames: every address resolved beforehand on both
+#             sides (SwarmNet `network.arp: static`, the replay's --arp-entries permanent, whose
+#             permanent entries let ns-3's AODV map neighbours to MAC addresses) and AODV's
+#             layer-2 feedback kept. Set beside the default stack, it tells what of a row's
+#             difference ARP's own frames and failures make.
 #
 # In both, SwarmNet's AODV keeps ns-3.37's rules (scripts/ns3_aodv_rules.py). Its sequence-number
 # rules: ns-3.37 keeps a broken or expired
@@ -59,31 +65,30 @@ DISK_NETWORK = {
 SETUPS = {
     "default": {"arp": "ns3", "link_layer_feedback": True, "replay": []},
     "aligned": {"arp": "static", "link_layer_feedback": False, "replay": ["--aligned"]},
+    "static_arp": {"arp": "static", "link_layer_feedback": True,
+                   "replay": ["--arp-entries", "permanent"]},
 }
 
 # The targets each configuration is judged on (compare.compare's tolerances; speed-up and control
-# overhead are added per row by run_grid.py). The default stack is held to issue 19's targets;
-# the aligned setup keeps the targets it was aligned to (mean delay 15%, MAC frames reported only).
+# overhead are added per row by run_grid.py). The default stack, and static_arp beside it, are
+# held to issue 19's targets; the aligned setup keeps the targets it was aligned to (mean delay 15%, MAC frames reported only).
 TOLERANCES = {
     "default": {"pdr_points": 3.0, "delay_pct": 20.0, "mac_pct": 10.0},
     "aligned": {"pdr_points": 3.0, "delay_pct": 15.0, "mac_pct": None},
+    "static_arp": {"pdr_points": 3.0, "delay_pct": 20.0, "mac_pct": 10.0},
 }
 
 
-def setup_name(aligned):
-    return "aligned" if aligned else "default"
-
-
-def aodv_params(aligned=False):
-    return {"link_layer_feedback": SETUPS[setup_name(aligned)]["link_layer_feedback"],
+def aodv_params(setup="default"):
+    return {"link_layer_feedback": SETUPS[setup]["link_layer_feedback"],
             **NS3_AODV_RULES}
 
 
-def routing_choice(routing, aligned=False):
+def routing_choice(routing, setup="default"):
     if routing == "flooding":
         return {"plugin": "flooding", "params": dict(FLOODING)}
     if routing == "aodv":
-        return {"plugin": "aodv", "params": aodv_params(aligned)}
+        return {"plugin": "aodv", "params": aodv_params(setup)}
     return {"plugin": routing}
 
 
@@ -96,45 +101,45 @@ def detect_stack(swarmnet, scenario):
     return "disk", (result.stderr or result.stdout).strip()
 
 
-def swarmnet_overrides(stack, routing, aligned=False):
+def swarmnet_overrides(stack, routing, setup="default"):
     """--set arguments that select the stack, ARP and the routing protocol (JSON is YAML flow)."""
-    arp = SETUPS[setup_name(aligned)]["arp"]
+    arp = SETUPS[setup]["arp"]
     if stack == "disk":
         network = dict(DISK_NETWORK)
-        network["routing"] = routing_choice(routing, aligned)
+        network["routing"] = routing_choice(routing, setup)
         network["arp"] = arp
         return ["--set", "network=" + json.dumps(network)]
-    return ["--set", "network.routing=" + json.dumps(routing_choice(routing, aligned)),
+    return ["--set", "network.routing=" + json.dumps(routing_choice(routing, setup)),
             "--set", "network.arp=" + arp]
 
 
-def replay_options(aligned=False):
+def replay_options(setup="default"):
     """The replay's options for the configuration (its default: ns-3's own stack)."""
-    return list(SETUPS[setup_name(aligned)]["replay"])
+    return list(SETUPS[setup]["replay"])
 
 
 def run_case(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), seed=1,
-             tolerances=None, log=print, aligned=False):
+             tolerances=None, log=print, setup="default"):
     """Runs both simulators and compares them; returns compare.compare()'s row."""
     summary, replay = run_pair(swarmnet, ns3, scenario, work_dir, routing, stack, overrides, seed,
-                               log, aligned)
-    return compared(summary, replay, routing, stack, tolerances, aligned)
+                               log, setup)
+    return compared(summary, replay, routing, stack, tolerances, setup)
 
 
-def compared(summary, replay, routing, stack, tolerances=None, aligned=False):
+def compared(summary, replay, routing, stack, tolerances=None, setup="default"):
     """compare.compare()'s row for SwarmNet's summary and ns-3's replay JSON (or pools of them);
     tolerances default to the configuration's (TOLERANCES)."""
     if tolerances is None:
-        tolerances = TOLERANCES[setup_name(aligned)]
+        tolerances = TOLERANCES[setup]
     row = compare.compare(summary, replay, **tolerances)
     row["routing"] = routing
     row["stack"] = stack
-    row["setup"] = setup_name(aligned)
+    row["setup"] = setup
     return row
 
 
 def run_pair(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), seed=1, log=print,
-             aligned=False, resume=False, ns3_from=None, ns3_run=None):
+             setup="default", resume=False, ns3_from=None, ns3_run=None):
     """Runs SwarmNet, then ns-3 on its traces; returns (summary.json, the replay's JSON). ns-3's
     run number (RngRun) is `ns3_run`, or the trace's `seed` when None. With
     `resume`, a pair that WORK_DIR/commands.json says ran to the end with these very commands is
@@ -146,12 +151,12 @@ def run_pair(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), se
     os.makedirs(work_dir, exist_ok=True)
     swarmnet_command = [swarmnet, "run", scenario, "--seed", str(seed), "--out", run_dir,
                         "--overwrite"]
-    swarmnet_command += swarmnet_overrides(stack, routing, aligned)
+    swarmnet_command += swarmnet_overrides(stack, routing, setup)
     for override in overrides:
         swarmnet_command += ["--set", override]
     ns3_command = [ns3, run_dir, "--routing", routing,
                    "--seed", str(seed if ns3_run is None else ns3_run), "-o", ns3_json]
-    ns3_command += NS3_RADIO + replay_options(aligned)
+    ns3_command += NS3_RADIO + replay_options(setup)
     if routing == "flooding":
         ns3_command += ["--flooding-ttl", str(FLOODING["ttl"]),
                         "--flooding-jitter-max-s", str(FLOODING["jitter_max_s"])]
