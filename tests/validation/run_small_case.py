@@ -7,10 +7,11 @@ By default both sides run ns-3's default stack (ARP by request and reply: SwarmN
 points, mean delay within 20%, MAC frames (ARP's included) within 10%; and the ARP figures of both
 sides are checked for consistency (requests sent, every ARP frame counted among the MAC's).
 --setup aligned (or --aligned) runs the setup aligned before issue 19 (no ARP frame on either
-side), held to its targets: delivery within 3 points, mean delay within 15%, and no ARP frame on
-either side. --setup static_arp runs the default stack with every address resolved beforehand,
-held to issue 19's targets: no ARP frame on either side, and ns-3's entries permanent (which let
-its AODV map a neighbour to its MAC address, so that layer-2 feedback reaches it).
+side), held to its targets: delivery within 3 points, mean delay within 15%; and checks that no
+ARP frame goes on the air on either side. --setup static_arp runs the default stack with every
+address resolved beforehand, held to issue 19's targets, and checks that no ARP frame goes on the
+air on either side and that ns-3's entries are permanent. The case routes with `direct`, so no
+setup's AODV or layer-2 feedback is exercised here: it checks each setup's ARP on both sides.
 
 Uses SwarmNet's 802.11 stack when it builds, otherwise the 120 m disk with the ideal MAC (and says
 so, allows 40% on the mean delay and does not judge MAC frames)."""

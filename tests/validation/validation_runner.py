@@ -53,15 +53,14 @@ DISK_NETWORK = {
 #             layer-2 feedback kept. Set beside the default stack, it tells what of a row's
 #             difference ARP's own frames and failures make.
 #
-# In both, SwarmNet's AODV keeps ns-3.37's rules (scripts/ns3_aodv_rules.py). Its sequence-number
-# rules: ns-3.37 keeps a broken or expired
-# route's sequence number where RFC 3561 6.11 increments it (docs/validation.md: on the dense row
-# its re-discoveries draw twice the RREPs), and a RREQ leaves the route to the neighbour that sent
-# it without a valid sequence number, so that no node answers for that neighbour until its next
-# HELLO (without it SwarmNet's discoveries end a ring earlier: issue 19's delay). Its four
-# control-message rules decide how RREPs, RERRs and the buffer move under load (docs/validation.md,
-# "The saturated rows"). SwarmNet's AODV is compared like for like: ns-3's variant of the
-# protocol, not SwarmNet's default.
+# In all three, SwarmNet's AODV keeps ns-3.37's rules (scripts/ns3_aodv_rules.py). Its
+# sequence-number rules: ns-3.37 keeps a broken or expired route's sequence number where RFC 3561
+# 6.11 increments it (docs/validation.md: on the dense row its re-discoveries draw twice the RREPs),
+# and a RREQ leaves the route to the neighbour that sent it without a valid sequence number, so that
+# no node answers for that neighbour until its next HELLO (without it SwarmNet's discoveries end a
+# ring earlier: issue 19's delay). Its four control-message rules decide how RREPs, RERRs and the
+# buffer move under load (docs/validation.md, "The saturated rows"). SwarmNet's AODV is compared
+# like for like: ns-3's variant of the protocol, not SwarmNet's default.
 SETUPS = {
     "default": {"arp": "ns3", "link_layer_feedback": True, "replay": []},
     "aligned": {"arp": "static", "link_layer_feedback": False, "replay": ["--aligned"]},
@@ -71,7 +70,8 @@ SETUPS = {
 
 # The targets each configuration is judged on (compare.compare's tolerances; speed-up and control
 # overhead are added per row by run_grid.py). The default stack, and static_arp beside it, are
-# held to issue 19's targets; the aligned setup keeps the targets it was aligned to (mean delay 15%, MAC frames reported only).
+# held to issue 19's targets; the aligned setup keeps the targets it was aligned to (mean delay
+# 15%, MAC frames reported only).
 TOLERANCES = {
     "default": {"pdr_points": 3.0, "delay_pct": 20.0, "mac_pct": 10.0},
     "aligned": {"pdr_points": 3.0, "delay_pct": 15.0, "mac_pct": None},
