@@ -30,8 +30,8 @@ a row misses a target. Default stack (issue 19's targets): delivery ratio within
 delay within 20%, MAC frames within 10%, AODV control packets per delivered packet within 20%,
 SwarmNet at least 10x faster on rows of 100 nodes or more; static_arp is held to the same.
 --aligned keeps the targets that setup was judged on: mean delay within 15%, MAC frames reported
-only. --pdr-points, --delay-pct,
---mac-pct and --control-pct override a tolerance (a negative value: not checked).
+only. --pdr-points, --delay-pct, --mac-pct and --control-pct override a tolerance (a negative
+value: not checked).
 With --seeds every row runs once per seed and is judged on the aggregate over the seeds
 (compare.pool: sums of messages, deliveries, control packets, frames and CPU seconds; the table's
 delivery difference also gives the per-seed range).
