@@ -3,6 +3,7 @@
 // the ideal MAC and over 802.11 DCF with SINR reception, in both sync modes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -56,6 +57,25 @@ TEST(Replay, PacketTraceIsByteIdenticalForEveryRoutingMacAndSyncMode) {
       }
     }
   }
+}
+
+// A run that wrote its frame trace (output.frame_trace) is replayed with it: the replay's
+// frames.csv is the run's, byte for byte, and named among the replay's outputs.
+TEST(Replay, FrameTraceIsByteIdenticalToTheRunsOver80211) {
+  TempDir dir;
+  const auto run_dir = dir.path() / "run";
+  const auto run = run_swarmnet(
+      "run " + kConfigs + "wireless.yaml" + kSmall + " --set \"network.routing={plugin: aodv}\"" +
+      " --set output.frame_trace=true --seed 5 --out " + run_dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto replay_dir = dir.path() / "replay";
+  const auto replay = run_swarmnet("replay " + run_dir.string() + " --out " + replay_dir.string());
+  ASSERT_EQ(replay.exit_code, 0) << replay.output;
+  const std::string original = read_file(run_dir / "frames.csv");
+  EXPECT_GT(std::count(original.begin(), original.end(), '\n'), 100) << "too few frames";
+  EXPECT_TRUE(original == read_file(replay_dir / "frames.csv")) << "frame traces differ";
+  const auto summary = nlohmann::json::parse(read_file(replay_dir / "summary.json"));
+  EXPECT_EQ(summary["outputs"]["frame_trace"], "frames.csv");
 }
 
 TEST(Replay, PositionsRecordHoldsExactPositionsEveryStep) {

@@ -2,6 +2,7 @@
 // fields of summary.json aside); another seed gives different traces; both sync modes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -107,6 +108,31 @@ TEST(RunDeterminism, NetworkSeedChangesTheChannelNotTheTraffic) {
     EXPECT_TRUE(expected == read_file(other.path() / file)) << file;
   }
   EXPECT_NE(read_file(master.path() / "packets.csv"), read_file(other.path() / "packets.csv"));
+}
+
+// output.frame_trace writes frames.csv: one line per frame summary.json counts, the same bytes
+// on every run of the same seed, named among the outputs; without it there is no such file.
+TEST(RunOutputs, TheFrameTraceIsWrittenOnlyWhenAskedAndIsDeterministic) {
+  TempDir a;
+  TempDir b;
+  TempDir none;
+  run_into(a.path(), " --seed 7 --set output.frame_trace=true");
+  run_into(b.path(), " --seed 7 --set output.frame_trace=true");
+  run_into(none.path(), " --seed 7");
+  const std::string frames = read_file(a.path() / "frames.csv");
+  EXPECT_TRUE(frames == read_file(b.path() / "frames.csv"));
+  EXPECT_EQ(frames.substr(0, frames.find('\n')),
+            "time_ns,node,kind,retry,receiver,bytes,sequence,message_id");
+  const auto s = nlohmann::json::parse(read_file(a.path() / "summary.json"));
+  EXPECT_EQ(s["outputs"]["frame_trace"], "frames.csv");
+  EXPECT_GT(s["mac"]["tx_frames"].get<std::size_t>(), 100U);
+  EXPECT_EQ(static_cast<std::size_t>(std::count(frames.begin(), frames.end(), '\n')),
+            s["mac"]["tx_frames"].get<std::size_t>() + 1);
+  EXPECT_FALSE(std::filesystem::exists(none.path() / "frames.csv"));
+  const auto without = nlohmann::json::parse(read_file(none.path() / "summary.json"));
+  EXPECT_FALSE(without["outputs"].contains("frame_trace"));
+  // The trace leaves the rest of the run as it was.
+  EXPECT_TRUE(read_file(a.path() / "packets.csv") == read_file(none.path() / "packets.csv"));
 }
 
 TEST(RunOutputs, SummaryCarriesTheContractFields) {

@@ -2,9 +2,12 @@
 // terminals with and without RTS/CTS, Bianchi's saturation throughput, and the channel cutoff.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "network/network_simulator.hpp"
@@ -91,6 +94,41 @@ TEST(WirelessNetwork, UnicastIsAcknowledgedAndRetriedUntilTheLimit) {
   EXPECT_EQ(outcome.report["packets"]["delivered"], 1);
   EXPECT_EQ(outcome.report["mac"]["tx_frames"], 2);
   EXPECT_EQ(outcome.report["mac"]["acks"], 1);
+}
+
+// frames.csv of one unicast from node 0 to node 1 at `positions` (output.frame_trace).
+std::vector<std::string> frame_lines(const std::vector<Vec2>& positions) {
+  PluginLoader loader;
+  const NetworkSettings settings = wireless_scenario(loader, 2);
+  std::ostringstream frames;
+  NetworkSimulator simulator(settings, loader, nullptr, &frames);
+  StepResult result;
+  for (const StepBatch& batch :
+       test::fixed_batches(settings, positions, 3, {test::message(9, 0, 1)})) {
+    simulator.run_step(batch, result);
+  }
+  simulator.finish();
+  const std::string text = frames.str();
+  EXPECT_EQ(network_report_json(simulator.report())["mac"]["tx_frames"].get<std::size_t>() + 1,
+            static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')))
+      << "one line per frame the report counts, after the header";
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line.substr(line.find(',') + 1));
+  return lines;  // without their times, which the tests above pin
+}
+
+TEST(WirelessNetwork, TheFrameTraceShowsEveryAttemptAndEveryAck) {
+  // Out of range: seven attempts of one MPDU, the Retry bit on all but the first, no ACK.
+  const std::vector<std::string> far = frame_lines({{10, 50}, {200, 50}});
+  ASSERT_EQ(far.size(), 8U);
+  EXPECT_EQ(far[0], "node,kind,retry,receiver,bytes,sequence,message_id");
+  EXPECT_EQ(far[1], "0,data,0,1,164,0,9");
+  for (std::size_t i = 2; i < far.size(); ++i) EXPECT_EQ(far[i], "0,data,1,1,164,0,9") << i;
+  // In range: the frame and its ACK, addressed back to the sender.
+  const std::vector<std::string> near = frame_lines({{10, 50}, {60, 50}});
+  EXPECT_EQ(near, (std::vector<std::string>{"node,kind,retry,receiver,bytes,sequence,message_id",
+                                            "0,data,0,1,164,0,9", "1,ack,0,0,14,-1,-1"}));
 }
 
 TEST(WirelessNetwork, PacketAtAnIdleStationWaitsDifsFromItsArrival) {

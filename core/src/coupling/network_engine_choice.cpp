@@ -6,12 +6,13 @@
 namespace swarmnet {
 
 std::unique_ptr<NetworkEngine> make_network_engine(const Scenario& scenario, PluginLoader& loader,
-                                                   std::ostream* packet_trace) {
+                                                   std::ostream* packet_trace,
+                                                   std::ostream* frame_trace) {
   const NetworkSettings settings = scenario.network_settings();
   if (settings.network.engine == NetworkEngineKind::ns3) {
     return std::make_unique<Ns3NetworkEngine>(settings);
   }
-  return std::make_unique<NetworkSimulator>(settings, loader, packet_trace);
+  return std::make_unique<NetworkSimulator>(settings, loader, packet_trace, frame_trace);
 }
 
 }  // namespace swarmnet

@@ -11,11 +11,11 @@
 
 namespace swarmnet {
 
-// SwarmNet's own simulator (writing `packet_trace` when not null), or ns-3 (which writes none:
-// the scenario check refuses output.packet_trace with it). Throws what the engine's set-up
-// throws.
-[[nodiscard]] std::unique_ptr<NetworkEngine> make_network_engine(const Scenario& scenario,
-                                                                 PluginLoader& loader,
-                                                                 std::ostream* packet_trace);
+// SwarmNet's own simulator (writing `packet_trace` and `frame_trace` when not null), or ns-3
+// (which writes neither: the scenario check refuses output.packet_trace and output.frame_trace
+// with it). Throws what the engine's set-up throws.
+[[nodiscard]] std::unique_ptr<NetworkEngine> make_network_engine(
+    const Scenario& scenario, PluginLoader& loader, std::ostream* packet_trace,
+    std::ostream* frame_trace = nullptr);
 
 }  // namespace swarmnet

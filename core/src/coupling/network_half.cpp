@@ -19,9 +19,11 @@ void serve(const Scenario& scenario, PluginLoader& loader, StepChannel& channel,
   const double cpu_start = thread_cpu_seconds();
   double transport_cpu = 0.0;
   std::optional<AtomicFile> trace;
+  std::optional<AtomicFile> frames;
   if (scenario.output.packet_trace) trace.emplace(run_dir / kPacketTraceFile);
-  const std::unique_ptr<NetworkEngine> engine =
-      make_network_engine(scenario, loader, trace ? &trace->stream() : nullptr);
+  if (scenario.output.frame_trace) frames.emplace(run_dir / kFrameTraceFile);
+  const std::unique_ptr<NetworkEngine> engine = make_network_engine(
+      scenario, loader, trace ? &trace->stream() : nullptr, frames ? &frames->stream() : nullptr);
   NetworkEngine& simulator = *engine;
 
   StepBatch batch;
@@ -41,6 +43,7 @@ void serve(const Scenario& scenario, PluginLoader& loader, StepChannel& channel,
   }
   simulator.finish();
   if (trace) trace->commit();
+  if (frames) frames->commit();
 
   NetworkReport report = simulator.report();
   const double total_cpu = thread_cpu_seconds() - cpu_start;

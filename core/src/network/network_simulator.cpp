@@ -35,16 +35,18 @@ SimTime checked_step(const NetworkSettings& settings) {
 }  // namespace
 
 NetworkSimulator::NetworkSimulator(const NetworkSettings& settings, PluginLoader& loader,
-                                   std::ostream* packet_trace)
+                                   std::ostream* packet_trace, std::ostream* frame_trace)
     : traffic_seed_(settings.traffic_seed),
       step_(checked_step(settings)),
       trace_(packet_trace),
+      frames_(frame_trace),
       channel_(settings, PropagationChain(settings, loader), scheduler_, settings.nodes),
       application_(settings.nodes, metrics_, trace_, packet_uids_) {
   const NodeServices services{scheduler_,
                               channel_,
                               application_,
                               trace_,
+                              frames_,
                               metrics_,
                               packet_uids_,
                               derive_seed(settings.seed, {hash_name("phy")}),
@@ -117,6 +119,7 @@ void NetworkSimulator::run_step(const StepBatch& batch, StepResult& result) {
   events += scheduler_.run_until(batch.start + step_);
 
   trace_.flush();
+  frames_.flush();
   result.events = events;
 }
 
@@ -124,6 +127,9 @@ NetworkReport NetworkSimulator::report() const {
   return metrics_.report(application_.undelivered_unicast(), scheduler_.events_run());
 }
 
-void NetworkSimulator::finish() { trace_.finish(); }
+void NetworkSimulator::finish() {
+  trace_.finish();
+  frames_.finish();
+}
 
 }  // namespace swarmnet

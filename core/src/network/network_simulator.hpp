@@ -17,6 +17,7 @@
 
 #include "network/application_layer.hpp"
 #include "network/channel.hpp"
+#include "network/frame_trace.hpp"
 #include "network/network_engine.hpp"
 #include "network/network_metrics.hpp"
 #include "network/network_settings.hpp"
@@ -31,13 +32,13 @@ namespace swarmnet {
 
 class NetworkSimulator final : public NetworkEngine {
  public:
-  // `packet_trace` may be null (no trace); it must outlive finish(). Creates one node per robot,
-  // one MAC and one routing instance per node, and the propagation chain, then calls attach() on
-  // every node's MAC and routing (node order). Per-node plugin seeds:
+  // `packet_trace` and `frame_trace` may be null (no trace); each must outlive finish(). Creates
+  // one node per robot, one MAC and one routing instance per node, and the propagation chain, then
+  // calls attach() on every node's MAC and routing (node order). Per-node plugin seeds:
   // derive_seed(settings.seed, {hash_name(kind), hash_name(plugin name), node}).
   // Throws PluginError or std::invalid_argument on a bad set-up.
   NetworkSimulator(const NetworkSettings& settings, PluginLoader& loader,
-                   std::ostream* packet_trace);
+                   std::ostream* packet_trace, std::ostream* frame_trace = nullptr);
   NetworkSimulator(const NetworkSimulator&) = delete;
   NetworkSimulator& operator=(const NetworkSimulator&) = delete;
   NetworkSimulator(NetworkSimulator&&) = delete;
@@ -55,7 +56,7 @@ class NetworkSimulator final : public NetworkEngine {
   // Metrics so far (keys and definitions: network_metrics.hpp).
   [[nodiscard]] NetworkReport report() const override;
 
-  // Flushes the packet trace (there is no footer); call once, at the end.
+  // Flushes the packet and frame traces (they have no footer); call once, at the end.
   void finish() override;
 
   [[nodiscard]] SimTime now() const { return scheduler_.now(); }
@@ -75,6 +76,7 @@ class NetworkSimulator final : public NetworkEngine {
   Scheduler scheduler_;
   NetworkMetrics metrics_;
   PacketTraceWriter trace_;
+  FrameTraceWriter frames_;
   PacketUidSource packet_uids_;
   Channel channel_;
   ApplicationLayer application_;

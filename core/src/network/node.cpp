@@ -58,6 +58,7 @@ void Node::MacPort::count(std::string_view counter, std::uint64_t amount) {
 
 void Node::MacPort::transmit(Frame frame, SimTime duration) {
   node_.services_.metrics.frame_transmitted(frame.size_bytes());
+  node_.services_.frames.record(node_.services_.scheduler.now(), node_.id_, frame);
   node_.services_.channel.transmit(node_.id_, std::move(frame), duration);
 }
 

@@ -3,7 +3,8 @@
 //
 // The kernel's part of the layer boundaries:
 //   routing.send_to_mac()   -> mac.enqueue()          (control packets counted here)
-//   mac.transmit()          -> channel                (mac.tx_frames / tx_bytes counted here)
+//   mac.transmit()          -> channel                (mac.tx_frames / tx_bytes counted, and
+//                                                      the frame trace written, here)
 //   phy reception           -> mac.on_receive()
 //   routing.send_to_mac()   -> ARP (network.arp: ns3) for a unicast next hop, then mac.enqueue()
 //   mac.deliver()           -> ARP packets to ARP; others: packet.hops + 1, then routing.receive()
@@ -21,6 +22,7 @@
 #include "network/application_layer.hpp"
 #include "network/arp.hpp"
 #include "network/channel.hpp"
+#include "network/frame_trace.hpp"
 #include "network/network_metrics.hpp"
 #include "network/packet_trace.hpp"
 #include "network/packet_uid_source.hpp"
@@ -38,6 +40,7 @@ struct NodeServices {
   Channel& channel;
   ApplicationLayer& application;
   PacketTraceWriter& trace;
+  FrameTraceWriter& frames;
   NetworkMetrics& metrics;
   PacketUidSource& packet_uids;
   std::uint64_t phy_seed = 0;  // node i's PHY draws from derive_seed(phy_seed, {i})

@@ -21,6 +21,7 @@
 #include <string>
 #include <string_view>
 
+#include "network/trace_lines.hpp"
 #include "swarmnet/ids.hpp"
 #include "swarmnet/packet.hpp"
 #include "swarmnet/units.hpp"
@@ -36,28 +37,22 @@ class PacketTraceWriter {
   static constexpr std::string_view kHeader =
       "time_ns,event,node,uid,message_id,source,destination,hops,bytes,detail\n";
 
-  // `out` may be null: nothing is written. Otherwise the header line is written now.
-  explicit PacketTraceWriter(std::ostream* out);
-  PacketTraceWriter(const PacketTraceWriter&) = delete;
-  PacketTraceWriter& operator=(const PacketTraceWriter&) = delete;
-  PacketTraceWriter(PacketTraceWriter&&) = delete;
-  PacketTraceWriter& operator=(PacketTraceWriter&&) = delete;
-  // Writes nothing: lines not yet flushed are discarded (the stream may be gone by then).
-  ~PacketTraceWriter() = default;
+  // `out` may be null: nothing is written. Otherwise the header line is written first. Lines not
+  // yet flushed when the writer goes are discarded (the stream may be gone by then).
+  explicit PacketTraceWriter(std::ostream* out) : lines_(out, kHeader) {}
 
-  [[nodiscard]] bool enabled() const { return out_ != nullptr; }
+  [[nodiscard]] bool enabled() const { return lines_.enabled(); }
 
   void record(SimTime time, PacketEvent event, NodeId node, const Packet& packet,
               std::string_view detail = {});
 
   // Hands buffered lines to the stream (lines are batched in memory between calls).
-  void flush();
+  void flush() { lines_.flush(); }
   // flush(), then flushes the stream itself.
-  void finish();
+  void finish() { lines_.finish(); }
 
  private:
-  std::ostream* out_;
-  std::string buffer_;
+  TraceLines lines_;
 };
 
 }  // namespace swarmnet

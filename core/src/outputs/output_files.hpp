@@ -7,6 +7,7 @@ inline constexpr const char* kSummaryFile = "summary.json";
 inline constexpr const char* kResolvedScenarioFile = "scenario.resolved.yaml";
 inline constexpr const char* kLogFile = "run.log";
 inline constexpr const char* kPacketTraceFile = "packets.csv";
+inline constexpr const char* kFrameTraceFile = "frames.csv";  // network/frame_trace.hpp
 inline constexpr const char* kMobilityTraceFile = "mobility.ns2";
 inline constexpr const char* kPositionsTraceFile = "positions.bin";  // outputs/positions_trace.hpp
 inline constexpr const char* kHeadingsTraceFile = "headings.bin";    // outputs/headings_trace.hpp

@@ -31,10 +31,15 @@ Json controllers_json(const ControllerMetrics& metrics) {
 }
 
 Json outputs_json(const Scenario& scenario, bool replay) {
-  if (replay) return {{"summary", kSummaryFile}, {"packet_trace", kPacketTraceFile}};
+  if (replay) {
+    Json outputs = {{"summary", kSummaryFile}, {"packet_trace", kPacketTraceFile}};
+    if (scenario.output.frame_trace) outputs["frame_trace"] = kFrameTraceFile;
+    return outputs;
+  }
   Json outputs = {
       {"summary", kSummaryFile}, {"scenario", kResolvedScenarioFile}, {"log", kLogFile}};
   if (scenario.output.packet_trace) outputs["packet_trace"] = kPacketTraceFile;
+  if (scenario.output.frame_trace) outputs["frame_trace"] = kFrameTraceFile;
   if (scenario.output.mobility_trace) {
     outputs["mobility_trace"] = kMobilityTraceFile;
     outputs["positions"] = kPositionsTraceFile;

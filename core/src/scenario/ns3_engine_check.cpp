@@ -275,11 +275,14 @@ void check_output(YAML::Node& tree, KeyFacts& keys) {
   const KeyPath trace({"output", "packet_trace"});
   if (!keys.given(trace)) {
     if (tree["output"] && tree["output"].IsMap()) tree["output"]["packet_trace"] = "false";
-    return;
-  }
-  if (keys.text(trace) == "true") {
+  } else if (keys.text(trace) == "true") {
     keys.refuse(trace, "the ns-3 engine writes no packet trace (packets.csv)",
                 "false with network.engine: ns3 (summary.json has its counters)");
+  }
+  const KeyPath frames({"output", "frame_trace"});
+  if (keys.given(frames) && keys.text(frames) == "true") {
+    keys.refuse(frames, "the ns-3 engine writes no frame trace (frames.csv)",
+                "false with network.engine: ns3 (summary.json has the MAC's counters)");
   }
 }
 

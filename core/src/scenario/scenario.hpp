@@ -24,6 +24,7 @@ inline const char* to_string(SyncMode mode) {
 struct OutputConfig {
   std::filesystem::path dir;  // resolved: --out, else output.dir, else runs/<name>-seed<seed>
   bool packet_trace = true;
+  bool frame_trace = false;  // every frame on the air (frames.csv): large, so off by default
   bool mobility_trace = true;
   double mobility_interval_s = 0.0;  // 0: every step
   bool traffic_schedule = true;

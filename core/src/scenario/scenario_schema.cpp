@@ -292,6 +292,8 @@ const KeySpec& scenario_schema() {
           .derived("runs/<name>-seed<seed>"),
       boolean_key("packet_trace", "Write packet events (send, forward, drop, deliver).")
           .defaults("true"),
+      boolean_key("frame_trace", "Write every frame put on the air (frames.csv).")
+          .defaults("false"),
       boolean_key("mobility_trace", "Write the ns-2 mobility trace.").defaults("true"),
       real_key("mobility_interval_s", "s", "Mobility trace sampling interval; 0 = every step.")
           .at_least(0).defaults("0"),

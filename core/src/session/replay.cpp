@@ -117,11 +117,13 @@ ReplayOutcome replay_network(const ReplayInputs& inputs, const std::filesystem::
 
   const double cpu_start = thread_cpu_seconds();
   std::optional<AtomicFile> trace;
+  std::optional<AtomicFile> frames;
   if (scenario.network.engine == NetworkEngineKind::native) {
     trace.emplace(out_dir / kPacketTraceFile);
+    if (scenario.output.frame_trace) frames.emplace(out_dir / kFrameTraceFile);
   }
-  const std::unique_ptr<NetworkEngine> engine =
-      make_network_engine(scenario, loader, trace ? &trace->stream() : nullptr);
+  const std::unique_ptr<NetworkEngine> engine = make_network_engine(
+      scenario, loader, trace ? &trace->stream() : nullptr, frames ? &frames->stream() : nullptr);
   NetworkEngine& simulator = *engine;
   StepBatch batch;
   StepResult result;
@@ -154,6 +156,7 @@ ReplayOutcome replay_network(const ReplayInputs& inputs, const std::filesystem::
   simulator.finish();
   const double network_cpu = thread_cpu_seconds() - cpu_start;
   if (trace) trace->commit();
+  if (frames) frames->commit();
 
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
