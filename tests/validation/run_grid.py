@@ -7,8 +7,8 @@ time of both network halves measured on every row.
         [--routing flooding,direct,aodv] [--seed 1 | --seeds 1-8] [--set KEY=VALUE ...]
         [--ns3-run N] [--setup default|aligned|static_arp] [--extra-rows issue19]
         [--row N,SIDE_M,RATE_HZ,PAYLOAD_B,SENDERS ...]
-        [--extra-only] [--pdr-points P] [--delay-pct D] [--mac-pct M] [--control-pct C]
-        [--out build/validation-grid] [--doc docs/validation.md]
+        [--extra-only] [--frame-traces] [--pdr-points P] [--delay-pct D] [--mac-pct M]
+        [--control-pct C] [--out build/validation-grid] [--doc docs/validation.md]
 
 Both sides run as ns-3 users run ns-3 by default: ARP by request and reply (SwarmNet
 `network.arp: ns3`, the replay's default) and AODV with layer-2 feedback (SwarmNet
@@ -105,6 +105,10 @@ def main():
     parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                         help="a further SwarmNet override for every row, e.g. "
                              "network.routing.params.increment_seqno_on_break=false")
+    parser.add_argument("--frame-traces", action="store_true",
+                        help="both sides write every frame they put on the air (SEED_DIR/"
+                             "swarmnet/frames.csv and SEED_DIR/ns3-frames.csv, about 40 bytes a "
+                             "frame), for frame_agreement.py; not with --ns3-from")
     parser.add_argument("--max-robots", type=int, default=100000, help="skip larger rows")
     parser.add_argument("--stack", choices=["auto", "80211", "disk"], default="auto")
     parser.add_argument("--resume", action="store_true",
@@ -121,15 +125,15 @@ def main():
                              "default: each trace's own seed. A grid with another run number "
                              "re-draws ns-3's side over the very same traces (SwarmNet's side is "
                              "unchanged): the spread over such grids is ns-3's own noise")
-    parser.add_argument("--setup", choices=sorted(vr.SETUPS), default="default",
-                        help="default: ns-3's default stack on both sides (ARP, AODV with "
-                             "layer-2 feedback); aligned: the setup aligned before issue 19 (no "
-                             "ARP frame on either side: SwarmNet network.arp: static, the "
-                             "replay's --aligned; AODV without layer-2 feedback); static_arp: "
-                             "the default stack with every address resolved beforehand "
-                             "(SwarmNet network.arp: static, replay --arp-entries permanent), "
-                             "layer-2 feedback kept")
-    parser.add_argument("--aligned", action="store_true", help="the same as --setup aligned")
+    vr.add_setup_arguments(
+        parser,
+        "default: ns-3's default stack on both sides (ARP, AODV with "
+        "layer-2 feedback); aligned: the setup aligned before issue 19 (no "
+        "ARP frame on either side: SwarmNet network.arp: static, the "
+        "replay's --aligned; AODV without layer-2 feedback); static_arp: "
+        "the default stack with every address resolved beforehand "
+        "(SwarmNet network.arp: static, replay --arp-entries permanent), "
+        "layer-2 feedback kept")
     parser.add_argument("--extra-rows", choices=sorted(EXTRA_ROWS), action="append", default=[],
                         help="add a named set of further rows for each protocol of --routing "
                              "(issue19: 150 robots / 600 m / 10 msg/s / 128 B / 20%% senders, "
@@ -151,8 +155,9 @@ def main():
     parser.add_argument("--from-results", metavar="RESULTS_JSON",
                         help="run nothing: rewrite the table (and --doc) from an earlier run")
     args = parser.parse_args()
-    if args.aligned and args.setup not in ("default", "aligned"):
-        parser.error("--aligned is --setup aligned: give one of them")
+    setup = vr.setup_from_arguments(parser, args)
+    if args.frame_traces and args.ns3_from:
+        parser.error("--frame-traces needs ns-3 to run again: give it without --ns3-from")
     args.seeds = args.seeds or [args.seed]
     if args.from_results:
         with open(args.from_results, encoding="utf-8") as f:
@@ -179,7 +184,6 @@ def main():
         print("SwarmNet's 802.11 stack is not available; the SwarmNet side runs the 120 m unit "
               "disk with the ideal MAC" + (":\n  " + reason.replace("\n", "\n  ") if reason else ""))
 
-    setup = "aligned" if args.aligned else args.setup
     print(f"setup: {setup} ({describe_setup(setup)})")
     rows_wanted = []
     extra = [spec for name in args.extra_rows for spec in EXTRA_ROWS[name]] + args.row
@@ -223,7 +227,7 @@ def main():
             row = run_row(swarmnet, ns3, scenario, os.path.join(out, name), routing, stack,
                           overrides, args.seeds, tolerances, setup, args.resume,
                           os.path.join(args.ns3_from, name) if args.ns3_from else None,
-                          args.ns3_run)
+                          args.ns3_run, args.frame_traces)
         except RuntimeError as error:
             print(f"  failed: {error}", flush=True)
             row = {"robots": robots, "routing": routing, "error": str(error), "pass": False}
@@ -307,7 +311,7 @@ def seed_list(text):
 
 
 def run_row(swarmnet, ns3, scenario, work_dir, routing, stack, overrides, seeds, tolerances,
-            setup="default", resume=False, ns3_from=None, ns3_run=None):
+            setup="default", resume=False, ns3_from=None, ns3_run=None, frame_traces=False):
     """One row: compare.compare()'s row for one seed; for several, the row of the pooled runs,
     with the range of the per-seed delivery differences and every seed's own row."""
     pairs = []
@@ -318,7 +322,7 @@ def run_row(swarmnet, ns3, scenario, work_dir, routing, stack, overrides, seeds,
             kept = ns3_from if len(seeds) == 1 else os.path.join(ns3_from, f"seed{seed}")
         pairs.append(vr.run_pair(swarmnet, ns3, scenario, seed_dir, routing, stack, overrides,
                                  seed, log=lambda s: None, setup=setup, resume=resume,
-                                 ns3_from=kept, ns3_run=ns3_run))
+                                 ns3_from=kept, ns3_run=ns3_run, frame_traces=frame_traces))
     if len(pairs) == 1:
         return vr.compared(*pairs[0], routing, stack, tolerances, setup)
     per_seed = [dict(vr.compared(*pair, routing, stack, tolerances, setup), seed=seed)

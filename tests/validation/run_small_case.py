@@ -24,11 +24,6 @@ import compare  # noqa: E402
 import validation_runner as vr  # noqa: E402
 
 
-# The replay's ARP entries and whether ARP frames are on the air, per setup.
-EXPECTED_ARP = {"default": ("none", True), "aligned": ("auto-generated", False),
-                "static_arp": ("permanent", False)}
-
-
 def arp_problems(summary, replay, setup, stack):
     """What is inconsistent in the ARP figures of SwarmNet's summary and the replay's JSON."""
     problems = []
@@ -47,7 +42,8 @@ def arp_problems(summary, replay, setup, stack):
     if arp["reply_frames"] < arp["replies_sent"]:
         problems.append("replay: fewer ARP reply frames than replies sent")
     sn_requests = summary.get("arp", {}).get("requests_sent")
-    entries, with_frames = EXPECTED_ARP[setup]
+    entries = vr.SETUPS[setup]["replay_arp_entries"]
+    with_frames = entries == "none"  # nothing resolved beforehand: ARP must go on the air
     if arp["entries"] != entries or (frames > 0) != with_frames:
         problems.append(f"replay ({setup}): ARP entries {arp['entries']}, {frames} ARP frames "
                         f"(expected {entries}, {'some' if with_frames else 'none'})")
@@ -66,19 +62,15 @@ def main():
     parser.add_argument("--work", required=True, help="directory for the two runs")
     parser.add_argument("--scenario", default=os.path.join(vr.SOURCE_DIR, "configs", "validation",
                                                             "small.yaml"))
-    parser.add_argument("--setup", choices=sorted(vr.SETUPS), default="default",
-                        help="default: ns-3's default stack; aligned: no ARP frame, no layer-2 "
-                             "feedback; static_arp: the default stack with every address "
-                             "resolved beforehand")
-    parser.add_argument("--aligned", action="store_true", help="the same as --setup aligned")
+    vr.add_setup_arguments(parser, "default: ns-3's default stack; aligned: no ARP frame, no "
+                                   "layer-2 feedback; static_arp: the default stack with every "
+                                   "address resolved beforehand")
     args = parser.parse_args()
-    if args.aligned and args.setup not in ("default", "aligned"):
-        parser.error("--aligned is --setup aligned: give one of them")
+    setup = vr.setup_from_arguments(parser, args)
     stack, reason = vr.detect_stack(args.swarmnet, args.scenario)
     if stack == "disk":
         print("SwarmNet's 802.11 stack is not available; SwarmNet runs the 120 m disk with the "
               "ideal MAC:\n  " + reason.replace("\n", "\n  "))
-    setup = "aligned" if args.aligned else args.setup
     tolerances = dict(vr.TOLERANCES[setup])
     # The ideal MAC has no DIFS, backoff or ACK: its one-hop delay is ns-3's minus about 0.2 ms,
     # so with the disk stack only the delivery ratio is held to its target.

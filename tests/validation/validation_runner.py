@@ -61,11 +61,15 @@ DISK_NETWORK = {
 # ring earlier: issue 19's delay). Its four control-message rules decide how RREPs, RERRs and the
 # buffer move under load (docs/validation.md, "The saturated rows"). SwarmNet's AODV is compared
 # like for like: ns-3's variant of the protocol, not SwarmNet's default.
+# "replay_arp_entries" is what the replay reports for its ARP entries (its JSON's arp.entries) under
+# the options of "replay"; ARP frames go on the air only with "none" (nothing resolved beforehand).
 SETUPS = {
-    "default": {"arp": "ns3", "link_layer_feedback": True, "replay": []},
-    "aligned": {"arp": "static", "link_layer_feedback": False, "replay": ["--aligned"]},
+    "default": {"arp": "ns3", "link_layer_feedback": True, "replay": [],
+                "replay_arp_entries": "none"},
+    "aligned": {"arp": "static", "link_layer_feedback": False, "replay": ["--aligned"],
+                "replay_arp_entries": "auto-generated"},
     "static_arp": {"arp": "static", "link_layer_feedback": True,
-                   "replay": ["--arp-entries", "permanent"]},
+                   "replay": ["--arp-entries", "permanent"], "replay_arp_entries": "permanent"},
 }
 
 # The targets each configuration is judged on (compare.compare's tolerances; speed-up and control
@@ -77,6 +81,19 @@ TOLERANCES = {
     "aligned": {"pdr_points": 3.0, "delay_pct": 15.0, "mac_pct": None},
     "static_arp": {"pdr_points": 3.0, "delay_pct": 20.0, "mac_pct": 10.0},
 }
+
+
+def add_setup_arguments(parser, setup_help):
+    """--setup, and --aligned as its older shorthand; setup_from_arguments reads them."""
+    parser.add_argument("--setup", choices=sorted(SETUPS), default="default", help=setup_help)
+    parser.add_argument("--aligned", action="store_true", help="the same as --setup aligned")
+
+
+def setup_from_arguments(parser, args):
+    """The setup add_setup_arguments' flags name; refuses --aligned beside another --setup."""
+    if args.aligned and args.setup not in ("default", "aligned"):
+        parser.error("--aligned is --setup aligned: give one of them")
+    return "aligned" if args.aligned else args.setup
 
 
 def aodv_params(setup="default"):
@@ -139,9 +156,11 @@ def compared(summary, replay, routing, stack, tolerances=None, setup="default"):
 
 
 def run_pair(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), seed=1, log=print,
-             setup="default", resume=False, ns3_from=None, ns3_run=None):
+             setup="default", resume=False, ns3_from=None, ns3_run=None, frame_traces=False):
     """Runs SwarmNet, then ns-3 on its traces; returns (summary.json, the replay's JSON). ns-3's
-    run number (RngRun) is `ns3_run`, or the trace's `seed` when None. With
+    run number (RngRun) is `ns3_run`, or the trace's `seed` when None. With `frame_traces` both
+    sides write every frame they put on the air (SwarmNet's swarmnet/frames.csv, the replay's
+    --frame-trace ns3-frames.csv; frame_agreement.py compares them). With
     `resume`, a pair that WORK_DIR/commands.json says ran to the end with these very commands is
     read back instead of run again. With `ns3_from` (the same pair's directory in an earlier
     grid), ns-3 is not run again: its result is taken from there, which holds only if the replay's
@@ -157,6 +176,11 @@ def run_pair(swarmnet, ns3, scenario, work_dir, routing, stack, overrides=(), se
     ns3_command = [ns3, run_dir, "--routing", routing,
                    "--seed", str(seed if ns3_run is None else ns3_run), "-o", ns3_json]
     ns3_command += NS3_RADIO + replay_options(setup)
+    if frame_traces:
+        if ns3_from:
+            raise RuntimeError("frame traces need ns-3 to run again: it cannot reuse a kept run")
+        swarmnet_command += ["--set", "output.frame_trace=true"]
+        ns3_command += ["--frame-trace", os.path.join(work_dir, "ns3-frames.csv")]
     if routing == "flooding":
         ns3_command += ["--flooding-ttl", str(FLOODING["ttl"]),
                         "--flooding-jitter-max-s", str(FLOODING["jitter_max_s"])]

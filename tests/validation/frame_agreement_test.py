@@ -1,0 +1,118 @@
+#!/usr/bin/env python3
+"""frame_agreement.py on traces written here: ACKs matched SIFS after a frame's airtime, an MPDU's
+attempts grouped and its fate told (first attempt, later, never: at the retry limit), a lost ACK
+seen as a retransmission after it, distances from ns-2 moves, a lost attempt put down to what
+else was on the air, and a malformed trace refused by name."""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "frame_agreement.py")
+HEADER = "time_ns,node,kind,retry,receiver,bytes,sequence,message_id\n"
+# 164 bytes at 6 Mbit/s: 20 us + 56 symbols of 4 us = 244 us; its ACK starts SIFS (16 us) later.
+ACK_AFTER_NS = (244 + 16) * 1000
+MOBILITY = ("$node_(0) set X_ 0\n$node_(0) set Y_ 0\n$node_(0) set Z_ 0\n"
+            "$node_(1) set X_ 50\n$node_(1) set Y_ 0\n$node_(1) set Z_ 0\n"
+            "$node_(2) set X_ 0\n$node_(2) set Y_ 115\n$node_(2) set Z_ 0\n"
+            # node 2 moves away from 115 m to 130 m between t = 1 s and t = 2 s
+            '$ns_ at 1.0 "$node_(2) setdest 0 130 15"\n')
+
+
+def data(t, node, receiver, sequence, retry=0, message=1):
+    return f"{t},{node},data,{retry},{receiver},164,{sequence},{message}\n"
+
+
+def ack(t, node, receiver):
+    return f"{t},{node},ack,0,{receiver},14,-1,-1\n"
+
+
+def frames(ack_lost):
+    text = HEADER + data(1_000_000, 0, 1, 5)
+    if ack_lost:  # node 1 answers, node 0 does not hear it and sends the frame again
+        text += ack(1_000_000 + ACK_AFTER_NS, 1, 0) + data(1_400_000, 0, 1, 5, retry=1)
+        text += ack(1_400_000 + ACK_AFTER_NS, 1, 0)
+    else:
+        text += ack(1_000_000 + ACK_AFTER_NS + 1000, 1, 0)  # 1 us late: within the slack
+    # to node 2, 130 m away by then: seven attempts, no ACK
+    for attempt in range(7):
+        text += data(2_100_000_000 + attempt * 1_000_000, 0, 2, 6, retry=min(attempt, 1))
+    # node 1 to node 0: the first attempt fails, the second is acknowledged
+    text += data(3_000_000_000, 1, 0, 1) + data(3_001_000_000, 1, 0, 1, retry=1)
+    text += ack(3_001_000_000 + ACK_AFTER_NS, 0, 1)
+    text += "3500000000,1,data,0,-1,164,2,7\n"  # a broadcast: no ACK expected
+    # an ACK at the wrong time (a different exchange) acknowledges nothing
+    text += data(4_000_000_000, 0, 1, 7) + ack(4_000_000_000 + ACK_AFTER_NS + 20_000, 1, 0)
+    # lost while its receiver transmits a broadcast of its own, 10 us after the frame began
+    text += data(5_000_000_000, 0, 1, 8) + "5000010000,1,data,0,-1,164,3,-1\n"
+    return text
+
+
+def write(path, text):
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text)
+
+
+def main():
+    problems = []
+    with tempfile.TemporaryDirectory() as root:
+        run_dir = os.path.join(root, "run")
+        os.makedirs(run_dir)
+        write(os.path.join(run_dir, "mobility.ns2"), MOBILITY)
+        write(os.path.join(run_dir, "frames.csv"), frames(ack_lost=False))
+        ns3_frames = os.path.join(root, "ns3-frames.csv")
+        write(ns3_frames, frames(ack_lost=True))
+        out = os.path.join(root, "out.json")
+        result = subprocess.run([sys.executable, SCRIPT, "--pair", f"{run_dir}:{ns3_frames}",
+                                 "--out", out], capture_output=True, text=True, check=False)
+        if result.returncode != 0:
+            print(result.stdout, result.stderr)
+            return 1
+        pooled = json.load(open(out, encoding="utf-8"))["pooled"]
+        s, n = pooled["swarmnet"], pooled["ns3"]
+
+        def expect(what, got, want):
+            if got != want:
+                problems.append(f"{what}: {got}, expected {want}")
+        expect("SwarmNet MPDUs", s["mpdus"], {"acked_first": 1, "acked_later": 1,
+                                              "never_acked": 3, "given_up_at_limit": 1,
+                                              "never_acked_fewer": 2, "mpdus": 5})
+        expect("ns-3 MPDUs", n["mpdus"], {"acked_first": 1, "acked_later": 1,
+                                          "never_acked": 3, "given_up_at_limit": 1,
+                                          "never_acked_fewer": 2, "sent_again_after_ack": 1,
+                                          "mpdus": 5})
+        expect("given up, by payload", s["given_up_at_limit_by_payload"], {"message": 1})
+        # within range, lost: 1 -> 0 and 0 -> 1 with nothing else on the air, 0 -> 1 while 1
+        # transmits; the seven attempts to node 2, 130 m away, are out of range
+        expect("lost by cause", s["lost_in_range_by_cause"],
+               {"<60 m": {"nothing_else_on_air": 2, "receiver_transmitting": 1}})
+        expect("SwarmNet first attempts", (s["first_attempts"], s["first_acked"]), (5, 1))
+        expect("SwarmNet retries", (s["retries"], s["retries_acked"]), (7, 1))
+        expect("ns-3 retries", (n["retries"], n["retries_acked"]), (8, 2))
+        expect("never acknowledged by attempts", s["never_acked_by_attempts"], {"1": 2, "7": 1})
+        expect("bands", sorted(s["bands"]), ["<60 m", ">=120 m"])
+        expect("beyond 120 m", s["bands"][">=120 m"].get("attempts"), 7)
+        expect("frames by kind", s["frames"], {"ack": 3, "data": 14})
+        if "| first attempts acknowledged | 20.0% of 5 | 20.0% of 5 |" not in result.stdout:
+            problems.append("table: no first-attempt row:\n" + result.stdout)
+        # A trace with other columns is refused, by name.
+        bad = os.path.join(root, "bad.csv")
+        write(bad, "time,node\n1,2\n")
+        refused = subprocess.run([sys.executable, SCRIPT, "--pair", f"{run_dir}:{bad}"],
+                                 capture_output=True, text=True, check=False)
+        if refused.returncode == 0 or "bad.csv: header" not in refused.stderr:
+            problems.append(f"a malformed trace was not refused by name: {refused.stderr}")
+        missing = subprocess.run([sys.executable, SCRIPT, "--seed-dirs", root],
+                                 capture_output=True, text=True, check=False)
+        if missing.returncode == 0 or "cannot read" not in missing.stderr:
+            problems.append(f"a missing run directory was not refused: {missing.stderr}")
+    for problem in problems:
+        print("FAIL:", problem)
+    if not problems:
+        print("frame_agreement: ACKs, MPDU fates, distances and refusals as expected")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
