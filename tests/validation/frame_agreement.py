@@ -26,6 +26,10 @@ follow it (Retry bit set, same receiver and sequence number): one in flight per 
 802.11's DCF. Its fate: acknowledged at its first attempt, at a later one, or never (given up at
 the retry limit, --retry-limit attempts; or fewer, when it expired in the queue or the run ended).
 
+--from-s and --to-s keep only the frames that start in that window of simulated time (an MPDU
+cut by the window's edge counts as what the window holds of it), to compare the two sides before
+their runs part ways.
+
 Prints, per side and pooled over the pairs: frames by kind; the share of unicast attempts
 acknowledged, first attempts and retransmissions apart, and per distance band; the MPDUs' fates;
 and writes the same as JSON (--out). Python standard library only."""
@@ -315,6 +319,10 @@ def main():
     parser.add_argument("--retry-limit", type=int, default=7, help="attempts before giving up")
     parser.add_argument("--range-m", type=float, default=RANGE_M,
                         help="nominal range: lost attempts within it are put down to a cause")
+    parser.add_argument("--from-s", type=float, default=0.0,
+                        help="only frames that start at or after this simulated time")
+    parser.add_argument("--to-s", type=float, default=math.inf,
+                        help="only frames that start before this simulated time")
     parser.add_argument("--out", help="write the counts as JSON here")
     args = parser.parse_args()
     pairs = [tuple(p.rsplit(":", 1)) for p in args.pair]
@@ -322,13 +330,17 @@ def main():
               for d in args.seed_dirs]
     if not pairs or any(len(p) != 2 for p in pairs):
         parser.error("give --pair RUN_DIR:NS3_FRAMES or --seed-dirs DIR ...")
+    if not args.from_s < args.to_s:
+        parser.error(f"--from-s {args.from_s:g} is not before --to-s {args.to_s:g}")
+    window = (args.from_s * 1e9, args.to_s * 1e9)
     result = {"pairs": [], "pooled": {"swarmnet": {}, "ns3": {}}}
     for run_dir, ns3_frames in pairs:
         mobility = Mobility(os.path.join(run_dir, "mobility.ns2"))
         entry = {"run_dir": run_dir, "ns3_frames": ns3_frames}
         for side, path in (("swarmnet", os.path.join(run_dir, "frames.csv")),
                            ("ns3", ns3_frames)):
-            entry[side] = analyse(read_frames(path), mobility, args.rate_mbps, args.ack_slack_us,
+            frames = [f for f in read_frames(path) if window[0] <= f[0] < window[1]]
+            entry[side] = analyse(frames, mobility, args.rate_mbps, args.ack_slack_us,
                                   args.retry_limit, args.range_m)
             add(result["pooled"][side], entry[side])
         result["pairs"].append(entry)

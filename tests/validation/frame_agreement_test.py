@@ -96,6 +96,15 @@ def main():
         expect("frames by kind", s["frames"], {"ack": 3, "data": 14})
         if "| first attempts acknowledged | 20.0% of 5 | 20.0% of 5 |" not in result.stdout:
             problems.append("table: no first-attempt row:\n" + result.stdout)
+        # A window of simulated time keeps only the frames that start in it: [3 s, 4.5 s) holds
+        # node 1's MPDU (acknowledged at its second attempt), the broadcast and node 0's MPDU
+        # whose ACK came too late.
+        windowed = subprocess.run([sys.executable, SCRIPT, "--pair", f"{run_dir}:{ns3_frames}",
+                                   "--from-s", "3", "--to-s", "4.5", "--out", out],
+                                  capture_output=True, text=True, check=False)
+        window = json.load(open(out, encoding="utf-8"))["pooled"]["swarmnet"]
+        expect("a window's MPDUs", (windowed.returncode, window["mpdus"]),
+               (0, {"acked_later": 1, "never_acked": 1, "never_acked_fewer": 1, "mpdus": 2}))
         # A trace with other columns is refused, by name.
         bad = os.path.join(root, "bad.csv")
         write(bad, "time,node\n1,2\n")
