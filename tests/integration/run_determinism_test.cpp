@@ -133,6 +133,10 @@ TEST(RunOutputs, TheFrameTraceIsWrittenOnlyWhenAskedAndIsDeterministic) {
   EXPECT_FALSE(without["outputs"].contains("frame_trace"));
   // The trace leaves the rest of the run as it was.
   EXPECT_TRUE(read_file(a.path() / "packets.csv") == read_file(none.path() / "packets.csv"));
+  // frames.csv is the run's own: --overwrite without the trace removes it, so no earlier trace
+  // is left beside the new run's other files.
+  run_into(a.path(), " --seed 8 --overwrite");
+  EXPECT_FALSE(std::filesystem::exists(a.path() / "frames.csv"));
 }
 
 TEST(RunOutputs, SummaryCarriesTheContractFields) {

@@ -26,8 +26,10 @@ follow it (Retry bit set, same receiver and sequence number): one in flight per 
 802.11's DCF. Its fate: acknowledged at its first attempt, at a later one, or never (given up at
 the retry limit, --retry-limit attempts; or fewer, when it expired in the queue or the run ended).
 
---from-s and --to-s keep only the frames that start in that window of simulated time (an MPDU
-cut by the window's edge counts as what the window holds of it), to compare the two sides before
+--from-s and --to-s keep only the frames that start in that window of simulated time (ACKs a
+little beyond its end too, so that its last frames can be acknowledged; an MPDU whose first
+attempt lies before the window is counted as begun_before_trace, with no fate), to compare the
+two sides before
 their runs part ways.
 
 Prints, per side and pooled over the pairs: frames by kind; the share of unicast attempts
@@ -129,13 +131,14 @@ def read_frames(path):
             for number, row in enumerate(reader, start=2):
                 if len(row) != 8:
                     sys.exit(f"frame_agreement.py: {path}:{number}: {len(row)} fields, expected 8")
-                frames.append((int(row[0]), int(row[1]), row[2], row[3] == "1", int(row[4]),
-                               int(row[5]), int(row[6]), int(row[7])))
+                try:
+                    frames.append((int(row[0]), int(row[1]), row[2], row[3] == "1", int(row[4]),
+                                   int(row[5]), int(row[6]), int(row[7])))
+                except ValueError as error:
+                    sys.exit(f"frame_agreement.py: {path}:{number}: {error}")
             return frames
     except OSError as error:
         sys.exit(f"frame_agreement.py: cannot read {path}: {error.strerror}")
-    except ValueError as error:
-        sys.exit(f"frame_agreement.py: {path}: {error}")
 
 
 def band_of(distance_m):
@@ -186,16 +189,20 @@ def analyse(frames, mobility, rate_mbps, slack_us, retry_limit, range_m=RANGE_M)
 
     attempts = collections.Counter()  # (first|retry, acked) -> count
     bands = collections.defaultdict(collections.Counter)  # band -> {attempts, acked, first, ...}
-    mpdus = {}  # node -> the MPDU in flight: [receiver, sequence, attempts, acked_at]
+    # node -> the MPDU in flight: [receiver, sequence, attempts, acked_at (0: not), payload, whole]
+    mpdus = {}
     fates = collections.Counter()
-    given_up_by_payload = collections.Counter()  # messages or control packets, at the limit
+    given_up_by_payload = collections.Counter()  # messages, control packets or ARP, at the limit
     given_up_by_attempts = collections.Counter()
     lost = collections.defaultdict(collections.Counter)  # band -> cause -> lost attempts
 
     def close(mpdu):
         if mpdu is None:
             return
-        _, _, count, acked_at, payload = mpdu
+        _, _, count, acked_at, payload, whole = mpdu
+        if not whole:
+            fates["begun_before_trace"] += 1  # its first attempt is not in the trace: no fate
+            return
         if acked_at:
             fates["acked_first" if acked_at == 1 else "acked_later"] += 1
             if count > acked_at:
@@ -224,11 +231,9 @@ def analyse(frames, mobility, rate_mbps, slack_us, retry_limit, range_m=RANGE_M)
         if retry and mpdu is not None and mpdu[0] == receiver and mpdu[1] == sequence:
             mpdu[2] += 1
         else:
-            if retry:
-                fates["retry_without_first"] += 1  # its first attempt is not in the trace
             close(mpdu)
             payload = "arp" if kind == "arp" else "message" if message >= 0 else "control"
-            mpdu = mpdus[node] = [receiver, sequence, 1, 0, payload]
+            mpdu = mpdus[node] = [receiver, sequence, 1, 0, payload, not retry]
         if acked and not mpdu[3]:
             mpdu[3] = mpdu[2]
     for mpdu in mpdus.values():
@@ -339,9 +344,16 @@ def main():
         entry = {"run_dir": run_dir, "ns3_frames": ns3_frames}
         for side, path in (("swarmnet", os.path.join(run_dir, "frames.csv")),
                            ("ns3", ns3_frames)):
-            frames = [f for f in read_frames(path) if window[0] <= f[0] < window[1]]
-            entry[side] = analyse(frames, mobility, args.rate_mbps, args.ack_slack_us,
-                                  args.retry_limit, args.range_m)
+            # An ACK ends a frame's exchange: one for a frame the window holds may start after it.
+            ack_grace = 3e6
+            frames = [f for f in read_frames(path) if window[0] <= f[0] < window[1] or
+                      (f[2] == "ack" and window[1] <= f[0] < window[1] + ack_grace)]
+            try:
+                entry[side] = analyse(frames, mobility, args.rate_mbps, args.ack_slack_us,
+                                      args.retry_limit, args.range_m)
+            except KeyError as error:
+                sys.exit(f"frame_agreement.py: {path}: {error.args[0]} ({run_dir}'s mobility.ns2 "
+                         f"does not go with this trace)")
             add(result["pooled"][side], entry[side])
         result["pairs"].append(entry)
         print(f"{run_dir}:\n{table(entry['swarmnet'], entry['ns3'])}\n", flush=True)
@@ -349,8 +361,11 @@ def main():
         print(f"pooled over {len(pairs)} pairs:\n"
               f"{table(result['pooled']['swarmnet'], result['pooled']['ns3'])}")
     if args.out:
-        with open(args.out, "w", encoding="utf-8") as f:
-            json.dump(result, f, indent=1)
+        try:
+            with open(args.out, "w", encoding="utf-8") as f:
+                json.dump(result, f, indent=1)
+        except OSError as error:
+            sys.exit(f"frame_agreement.py: cannot write {args.out}: {error.strerror}")
     return 0
 
 

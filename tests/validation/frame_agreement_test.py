@@ -105,6 +105,25 @@ def main():
         window = json.load(open(out, encoding="utf-8"))["pooled"]["swarmnet"]
         expect("a window's MPDUs", (windowed.returncode, window["mpdus"]),
                (0, {"acked_later": 1, "never_acked": 1, "never_acked_fewer": 1, "mpdus": 2}))
+        # A window's edges: the frame at 1 ms is acknowledged after the window ends (its ACK is
+        # kept), and node 0's MPDU to node 2 whose first attempt precedes the window has no fate.
+        for lo, hi, want in (("0", "0.0011", {"acked_first": 1, "mpdus": 1}),
+                             ("2.1025", "2.2", {"begun_before_trace": 1, "mpdus": 0})):
+            subprocess.run([sys.executable, SCRIPT, "--pair", f"{run_dir}:{ns3_frames}",
+                            "--from-s", lo, "--to-s", hi, "--out", out],
+                           capture_output=True, text=True, check=False)
+            got = json.load(open(out, encoding="utf-8"))["pooled"]["swarmnet"]["mpdus"]
+            expect(f"MPDUs in [{lo} s, {hi} s)", got, want)
+        # A mobility trace that lacks a node of the frame trace is refused, naming both.
+        other_dir = os.path.join(root, "other")
+        os.makedirs(other_dir)
+        write(os.path.join(other_dir, "mobility.ns2"), MOBILITY.split("$node_(2)")[0])
+        write(os.path.join(other_dir, "frames.csv"), frames(ack_lost=False))
+        mismatched = subprocess.run([sys.executable, SCRIPT, "--pair", f"{other_dir}:{ns3_frames}"],
+                                    capture_output=True, text=True, check=False)
+        if mismatched.returncode == 0 or "does not go with this trace" not in mismatched.stderr:
+            problems.append(f"a mobility trace without node 2 was not refused: "
+                            f"{mismatched.stderr[-300:]}")
         # A trace with other columns is refused, by name.
         bad = os.path.join(root, "bad.csv")
         write(bad, "time,node\n1,2\n")
@@ -112,6 +131,12 @@ def main():
                                  capture_output=True, text=True, check=False)
         if refused.returncode == 0 or "bad.csv: header" not in refused.stderr:
             problems.append(f"a malformed trace was not refused by name: {refused.stderr}")
+        write(bad, HEADER + "1000,0,data,0,1,164,zero,1\n")
+        refused = subprocess.run([sys.executable, SCRIPT, "--pair", f"{run_dir}:{bad}"],
+                                 capture_output=True, text=True, check=False)
+        if refused.returncode == 0 or "bad.csv:2:" not in refused.stderr:
+            problems.append(f"a row that is not integers was not refused by line: "
+                            f"{refused.stderr}")
         missing = subprocess.run([sys.executable, SCRIPT, "--seed-dirs", root],
                                  capture_output=True, text=True, check=False)
         if missing.returncode == 0 or "cannot read" not in missing.stderr:

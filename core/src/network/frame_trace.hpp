@@ -10,7 +10,8 @@
 //   receiver     the frame's receiver (a next hop, or the data frame's sender for an ACK), or -1
 //                for broadcast
 //   bytes        the frame's size on the air, MAC header and FCS included
-//   sequence     the data frame's sequence number; -1 for other kinds
+//   sequence     the data frame's sequence number (the MAC's own counter: dcf80211 counts to
+//                65535, where ns-3's 802.11 sequence number wraps at 4096); -1 for other kinds
 //   message_id   the application message a data frame carries; -1 for none
 // Only integers and fixed words are written. Like packets.csv, the run writes the file under a
 // temporary name and renames it when done, so a file that exists is whole.
