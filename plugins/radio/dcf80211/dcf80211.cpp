@@ -30,16 +30,24 @@ PluginInfo Dcf80211::info() {
       "rts_threshold_bytes (MPDU bytes) are preceded by RTS/CTS (CTS timeout likewise). "
       "Failed RTS and data sent without RTS count against short_retry_limit, data after a CTS "
       "against long_retry_limit (attempts, as ns-3's MaxSsrc/MaxSlrc); at the limit the packet "
-      "is dropped (retry_limit). Broadcasts are sent once, without RTS or ACK. Duplicates "
+      "is dropped (retry_limit). With retry_counters: per_packet (the default) each packet "
+      "starts from zero; with station the counts belong to the station, as ns-3.37's "
+      "WifiRemoteStationManager keeps them: reset by an ACK, a CTS or a drop at the limit, but "
+      "not when a packet expires, so the next packet has only the attempts that remain. Broadcasts "
+      "are sent once, without RTS or ACK. Duplicates "
       "(retries of an already received sequence number) are acknowledged but not delivered "
       "twice.\n"
       "Queue: a FIFO of queue_limit places, taken by the waiting packets and by the packet of the "
       "exchange under way until it is acknowledged or dropped (a broadcast: until it goes on the "
-      "air), as in ns-3's WifiMacQueue; a packet that "
-      "waited longer than queue_max_delay_s is dropped when it reaches the head "
-      "(buffer_timeout), and a packet arriving at a full queue first has the expired packets "
-      "removed (buffer_timeout), then is dropped (queue_full) if the queue is still full, like "
-      "ns-3's WifiMacQueue (500 packets, 500 ms).\n"
+      "air), as in ns-3's WifiMacQueue. A packet that waited longer than queue_max_delay_s "
+      "is dropped (buffer_timeout). With mpdu_lifetime: at_head (the default) this is checked "
+      "as a packet reaches the head, and the packet being sent never expires. With ns3 it is "
+      "checked as ns-3.37 does, at every arrival, channel access and release, for the packet "
+      "being sent too: one that expires while it waits for access gives the access to the next "
+      "packet (same backoff, same contention window); one that expires during an attempt is "
+      "reported then and not sent again. A packet arriving at a full queue first has "
+      "the expired packets removed, then is dropped (queue_full) if the queue is still full, "
+      "like ns-3's WifiMacQueue (500 packets, 500 ms).\n"
       "Link feedback: routing hears of a dropped unicast packet through link_failed(packet, "
       "next_hop) (\"the MAC dropped a unicast MPDU to next_hop\"), ARP packets included. With "
       "link_failure_reports: every_drop (the default) every such drop is reported, at the retry "
@@ -69,6 +77,17 @@ PluginInfo Dcf80211::info() {
                         65535),
           integer_param("queue_limit", 500, "packets", "interface queue capacity", 1, 10000000),
           real_param("queue_max_delay_s", 0.5, "s", "longest wait in the queue", 0.0, 1.0e9),
+          text_param("mpdu_lifetime", "at_head",
+                     "when queue_max_delay_s is applied: ns3 (ns-3.37's WifiMacQueue: expired "
+                     "packets are removed at every arrival, channel access and release, the one "
+                     "being sent included) or at_head (only as a packet reaches the head of the "
+                     "queue or meets a full queue; the packet being sent never expires)",
+                     {"ns3", "at_head"}),
+          text_param("retry_counters", "per_packet",
+                     "what the retry limits count: station (ns-3.37's SSRC/SLRC: one short and "
+                     "one long count per station, reset by an ACK, a CTS or a drop at the limit "
+                     "but not by an expiry) or per_packet (each packet starts from zero)",
+                     {"station", "per_packet"}),
           text_param("link_failure_reports", "every_drop",
                      "which drops of a unicast packet routing hears of (link_failed): every_drop "
                      "(retry limit, full queue, expired wait: ns-3's DroppedMpdu) or retry_limit "
@@ -93,7 +112,9 @@ Dcf80211::Dcf80211(const PluginArgs& args)
       rts_threshold_bytes_(static_cast<std::uint32_t>(args.params.integer("rts_threshold_bytes"))),
       short_retry_limit_(static_cast<std::uint32_t>(args.params.integer("short_retry_limit"))),
       long_retry_limit_(static_cast<std::uint32_t>(args.params.integer("long_retry_limit"))),
-      report_every_drop_(args.params.text("link_failure_reports") == "every_drop") {}
+      report_every_drop_(args.params.text("link_failure_reports") == "every_drop"),
+      wipe_expired_(args.params.text("mpdu_lifetime") == "ns3"),
+      station_retry_counts_(args.params.text("retry_counters") == "station") {}
 
 void Dcf80211::attach(MacContext& context) {
   context_ = &context;
@@ -116,9 +137,48 @@ void Dcf80211::drop_expired(const std::vector<InterfaceQueue::Item>& expired) {
   }
 }
 
+Dcf80211::RetryCounts& Dcf80211::retry_counts() {
+  return station_retry_counts_ ? station_retries_ : exchange_->retries;
+}
+
+std::vector<InterfaceQueue::Item> Dcf80211::wipe_expired() {
+  std::vector<InterfaceQueue::Item> expired;
+  // A broadcast leaves the queue as it goes on the air; an expired exchange has left it.
+  const bool exchange_queued = exchange_ && !exchange_->expired &&
+                               !(exchange_->in_progress && exchange_->next_hop == kBroadcast);
+  if (exchange_queued && queue_.outlived(exchange_->enqueued_at, now())) {
+    expired.push_back(
+        InterfaceQueue::Item{exchange_->packet, exchange_->next_hop, exchange_->enqueued_at});
+    queue_.release();
+    if (exchange_->in_progress) {
+      exchange_->expired = true;
+    } else {
+      exchange_.reset();
+    }
+  }
+  for (InterfaceQueue::Item& item : queue_.take_expired(now())) expired.push_back(std::move(item));
+  // ns-3 sends whatever heads the queue when access comes: the access under way (if any) now
+  // serves the next packet, with the backoff and contention window as they are.
+  if (!exchange_) take_next_exchange(expired);
+  return expired;
+}
+
 // Reports to routing may come back at once as new packets (a RERR): the queue's reports are made
 // once the MAC's own state is settled.
 void Dcf80211::enqueue(Packet packet, NodeId next_hop) {
+  if (wipe_expired_) {
+    // ns-3.37's Txop::Queue looks for frames to send, wiping expired ones, before it queues the
+    // arrival; their drops are reported first, so that a RERR they cause is queued first.
+    drop_expired(wipe_expired());
+    if (queue_.full()) {
+      drop_mpdu(packet, next_hop, DropReason::queue_full);
+      return;
+    }
+    const bool idle_station = queue_.empty() && !exchange_;
+    queue_.push(std::move(packet), next_hop, now());
+    if (idle_station) start_exchange_if_needed(true);
+    return;
+  }
   std::vector<InterfaceQueue::Item> expired;
   if (queue_.full()) {
     // ns-3's WifiMacQueue::Insert: a full queue first drops its expired packets.
@@ -135,18 +195,24 @@ void Dcf80211::enqueue(Packet packet, NodeId next_hop) {
   drop_expired(expired);
 }
 
+bool Dcf80211::take_next_exchange(std::vector<InterfaceQueue::Item>& expired) {
+  auto item =
+      queue_.pop(now(), [&expired](const InterfaceQueue::Item& old) { expired.push_back(old); });
+  if (!item) return false;
+  const std::uint32_t mpdu_bytes = header_bytes_ + item->packet.size_bytes();
+  const bool use_rts = item->next_hop != kBroadcast && mpdu_bytes > rts_threshold_bytes_;
+  exchange_ = Exchange{std::move(item->packet), item->next_hop, item->enqueued_at,
+                       next_sequence_++,        use_rts,        RetryCounts{}};
+  return true;
+}
+
 void Dcf80211::start_exchange_if_needed(bool fresh_arrival) {
   if (exchange_) return;
   std::vector<InterfaceQueue::Item> expired;
-  auto item =
-      queue_.pop(now(), [&expired](const InterfaceQueue::Item& old) { expired.push_back(old); });
-  if (!item) {
+  if (!take_next_exchange(expired)) {
     drop_expired(expired);
     return;
   }
-  const std::uint32_t mpdu_bytes = header_bytes_ + item->packet.size_bytes();
-  const bool use_rts = item->next_hop != kBroadcast && mpdu_bytes > rts_threshold_bytes_;
-  exchange_ = Exchange{std::move(item->packet), item->next_hop, next_sequence_++, use_rts};
   // 802.11-2016 10.3.4.2 as ns-3.37 applies it (ChannelAccessManager::NeedBackoffUponAccess):
   // a packet reaching an idle station whose backoff is 0 is sent without backoff if the medium
   // (physical or NAV) is idle now, after it stays idle for DIFS from now (and DIFS/EIFS after
@@ -181,14 +247,25 @@ void Dcf80211::schedule_access() {
 
 void Dcf80211::access_granted() {
   access_requested_ = false;
-  if (!exchange_) return;
-  if (exchange_->use_rts) {
-    context_->count("rts");
-    transmit(make_rts(exchange_->next_hop, header_bytes_ + exchange_->packet.size_bytes(), timing_),
-             TxKind::rts);
-    return;
+  // ns-3.37's FrameExchangeManager::StartTransmission wipes the expired packets first, then
+  // sends the head of the queue; with none left it releases the channel with a new backoff.
+  std::vector<InterfaceQueue::Item> expired;
+  if (wipe_expired_) {
+    expired = wipe_expired();
+    if (!exchange_) new_backoff();
   }
-  send_data();
+  if (exchange_) {
+    exchange_->in_progress = true;
+    if (exchange_->use_rts) {
+      context_->count("rts");
+      transmit(
+          make_rts(exchange_->next_hop, header_bytes_ + exchange_->packet.size_bytes(), timing_),
+          TxKind::rts);
+    } else {
+      send_data();
+    }
+  }
+  drop_expired(expired);
 }
 
 void Dcf80211::send_data() {
@@ -256,19 +333,22 @@ void Dcf80211::exchange_failed() {
   timeout_timer_ = kNoTimer;
   context_->count(stage == Await::cts ? "cts_timeouts" : "ack_timeouts");
   access_.busy_until(now());
-  bool give_up = false;
-  if (stage == Await::ack && exchange_->use_rts) {
-    give_up = ++exchange_->long_retries >= long_retry_limit_;
-  } else {
-    give_up = ++exchange_->short_retries >= short_retry_limit_;
-  }
-  if (give_up) {
+  RetryCounts& counts = retry_counts();
+  const bool long_count = stage == Await::ack && exchange_->use_rts;
+  std::uint32_t& count = long_count ? counts.long_count : counts.short_count;
+  if (++count >= (long_count ? long_retry_limit_ : short_retry_limit_)) {
+    count = 0;  // ns-3.37's ReportFinalDataFailed / ReportFinalRtsFailed
     // Routing hears of it while the exchange still stands, so that a packet it sends at once
     // (a RERR) queues behind the ones waiting; the dropped packet still holds its place then, as
     // ns-3 reports DroppedMpdu before it dequeues the MPDU.
     const Packet packet = exchange_->packet;
     const NodeId next_hop = exchange_->next_hop;
-    drop_mpdu(packet, next_hop, DropReason::retry_limit);
+    if (exchange_->expired) {
+      // Counted as dropped when it expired; ns-3's DroppedMpdu fires again at the limit.
+      context_->link_failed(packet, next_hop);
+    } else {
+      drop_mpdu(packet, next_hop, DropReason::retry_limit);
+    }
     exchange_finished();
     return;
   }
@@ -276,8 +356,20 @@ void Dcf80211::exchange_failed() {
   cw_.failed();
   new_backoff();
   exchange_->retry = true;
-  access_requested_ = true;
-  schedule_access();
+  exchange_->in_progress = false;
+  std::vector<InterfaceQueue::Item> expired;
+  if (wipe_expired_) {
+    // ns-3.37's Txop::NotifyChannelReleased: the backoff is drawn, then the expired packets are
+    // wiped; access is requested only if a packet is left. An exchange that expired during the
+    // attempt is not sent again: the next packet inherits the contention window.
+    if (exchange_->expired) exchange_.reset();
+    expired = wipe_expired();
+  }
+  if (exchange_) {
+    access_requested_ = true;
+    schedule_access();
+  }
+  drop_expired(expired);
 }
 
 void Dcf80211::exchange_finished() {
@@ -333,6 +425,7 @@ void Dcf80211::on_receive(const Frame& frame, const RxInfo& /*info*/) {
         timeout_pending_busy_ = false;
         if (timeout_timer_ != kNoTimer) context_->cancel(timeout_timer_);
         timeout_timer_ = kNoTimer;
+        if (station_retry_counts_) station_retries_.short_count = 0;  // ns-3's ReportRtsOk
         send_after_sifs(make_data(exchange_->packet, exchange_->next_hop, header_bytes_,
                                   exchange_->sequence, exchange_->retry, timing_),
                         TxKind::data);
@@ -342,6 +435,9 @@ void Dcf80211::on_receive(const Frame& frame, const RxInfo& /*info*/) {
       if (awaiting_ == Await::ack && exchange_) {
         if (timeout_timer_ != kNoTimer) context_->cancel(timeout_timer_);
         timeout_timer_ = kNoTimer;
+        if (station_retry_counts_) {  // ns-3's ReportDataOk
+          (exchange_->use_rts ? station_retries_.long_count : station_retries_.short_count) = 0;
+        }
         exchange_finished();
         return;
       }

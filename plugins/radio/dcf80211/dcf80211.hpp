@@ -37,18 +37,36 @@ class Dcf80211 final : public Mac {
   enum class Await : std::uint8_t { none, cts, ack };
   enum class TxKind : std::uint8_t { data, rts, response };
 
-  // The MSDU being sent, with its retry counters.
+  // Failed attempts counted against short_retry_limit (RTS, or data sent without RTS) and
+  // long_retry_limit (data after a CTS).
+  struct RetryCounts {
+    std::uint32_t short_count = 0;
+    std::uint32_t long_count = 0;
+  };
+
+  // The MSDU being sent. Its retry counts are used with retry_counters: per_packet.
   struct Exchange {
     Packet packet;
     NodeId next_hop;
+    SimTime enqueued_at;
     std::uint16_t sequence;
     bool use_rts;
-    std::uint32_t short_retries = 0;  // failed attempts counted against short_retry_limit
-    std::uint32_t long_retries = 0;   // failed data attempts after a CTS (long_retry_limit)
+    RetryCounts retries;
     bool retry = false;
+    bool in_progress = false;  // an attempt is on the air or awaiting its response
+    // Its lifetime ran out during an attempt (mpdu_lifetime: ns3): it was reported dropped and
+    // left the queue; the attempt runs to its end, but the packet is not sent again.
+    bool expired = false;
   };
 
   void start_exchange_if_needed(bool fresh_arrival);
+  // Makes the oldest packet that has not expired the exchange (false: none waits).
+  bool take_next_exchange(std::vector<InterfaceQueue::Item>& expired);
+  // mpdu_lifetime: ns3 — removes every packet whose lifetime has run out, the exchange's
+  // included, as ns-3.37's WifiMacQueue::WipeAllExpiredMpdus, and returns them to be reported.
+  std::vector<InterfaceQueue::Item> wipe_expired();
+  // The counts the limits apply to: the station's or the exchange's (retry_counters).
+  RetryCounts& retry_counts();
   void schedule_access();
   void access_granted();
   void send_data();
@@ -75,7 +93,10 @@ class Dcf80211 final : public Mac {
   std::uint32_t rts_threshold_bytes_;
   std::uint32_t short_retry_limit_;
   std::uint32_t long_retry_limit_;
-  bool report_every_drop_;  // link_failure_reports: every_drop (ns-3) or retry_limit
+  bool report_every_drop_;     // link_failure_reports: every_drop (ns-3) or retry_limit
+  bool wipe_expired_;          // mpdu_lifetime: ns3 (wipes at arrival, access, retry) or at_head
+  bool station_retry_counts_;  // retry_counters: station (ns-3.37) or per_packet
+  RetryCounts station_retries_;
 
   std::optional<Exchange> exchange_;
   bool access_requested_ = false;

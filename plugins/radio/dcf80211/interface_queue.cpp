@@ -15,7 +15,7 @@ std::optional<InterfaceQueue::Item> InterfaceQueue::pop(
   while (!items_.empty()) {
     Item item = std::move(items_.front());
     items_.pop_front();
-    if (now - item.enqueued_at > max_delay_) {
+    if (outlived(item.enqueued_at, now)) {
       expired(item);
       continue;
     }
@@ -27,7 +27,7 @@ std::optional<InterfaceQueue::Item> InterfaceQueue::pop(
 
 std::vector<InterfaceQueue::Item> InterfaceQueue::take_expired(SimTime now) {
   std::vector<Item> expired;
-  while (!items_.empty() && now - items_.front().enqueued_at > max_delay_) {
+  while (!items_.empty() && outlived(items_.front().enqueued_at, now)) {
     expired.push_back(std::move(items_.front()));
     items_.pop_front();
   }

@@ -36,6 +36,10 @@ class InterfaceQueue {
   // arrives at a full queue, before it refuses one.
   std::vector<Item> take_expired(SimTime now);
 
+  // Whether a packet queued at `enqueued_at` has waited longer than max_delay at `now`.
+  [[nodiscard]] bool outlived(SimTime enqueued_at, SimTime now) const {
+    return now - enqueued_at > max_delay_;
+  }
   [[nodiscard]] std::size_t size() const { return items_.size(); }
   [[nodiscard]] bool empty() const { return items_.empty(); }
   // `limit` places taken, by waiting packets and the popped one not yet released.

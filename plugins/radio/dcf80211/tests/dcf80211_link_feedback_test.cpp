@@ -19,11 +19,13 @@ using testing::TestScheduler;
 
 class Dcf80211LinkFeedback : public ::testing::Test {
  protected:
-  void make(std::int64_t queue_limit, double max_delay_s, const std::string& reports) {
+  void make(std::int64_t queue_limit, double max_delay_s, const std::string& reports,
+            const std::string& lifetime = "ns3") {
     mac_ = std::make_unique<Dcf80211>(plugin_args<Dcf80211>({{"queue_limit", queue_limit},
                                                              {"queue_max_delay_s", max_delay_s},
                                                              {"short_retry_limit", std::int64_t{1}},
-                                                             {"link_failure_reports", reports}},
+                                                             {"link_failure_reports", reports},
+                                                             {"mpdu_lifetime", lifetime}},
                                                             3, 0, 4));
     mac_->attach(node_);
   }
@@ -148,9 +150,10 @@ TEST_F(Dcf80211LinkFeedback, RetryLimitModeReportsOnlyTheRetryLimit) {
 }
 
 // ns-3's WifiMacQueue::Insert: a packet arriving at a full queue first has the expired packets
-// removed (Expired, reported), and is queued if that made room.
+// removed (Expired, reported), and is queued if that made room. With mpdu_lifetime: at_head the
+// packet on the air keeps its place.
 TEST_F(Dcf80211LinkFeedback, AFullQueueDropsItsExpiredPacketsBeforeRefusingOne) {
-  make(2, 0.001, "every_drop");
+  make(2, 0.001, "every_drop", "at_head");
   mac_->enqueue(packet(1, 1), 1);
   mac_->enqueue(packet(2, 2), 2);
   scheduler_.run_for(from_seconds(0.002));  // packet 1 on the air, packet 2 expired in the queue
@@ -162,6 +165,26 @@ TEST_F(Dcf80211LinkFeedback, AFullQueueDropsItsExpiredPacketsBeforeRefusingOne) 
   EXPECT_EQ(node_.link_failures[0].next_hop, 2U);
   mac_->enqueue(packet(4, 3), 3);  // packet 3 is fresh: now the queue is full
   EXPECT_EQ(drops(DropReason::queue_full), 1U);
+}
+
+// With mpdu_lifetime: ns3 the packet on the air expires too: both places are freed.
+TEST_F(Dcf80211LinkFeedback, AnArrivalWipesThePacketOnTheAirWhenItsLifetimeEnded) {
+  make(2, 0.001, "every_drop");
+  mac_->enqueue(packet(1, 1), 1);
+  mac_->enqueue(packet(2, 2), 2);
+  scheduler_.run_for(from_seconds(0.002));  // packet 1 on the air, both outlived 1 ms
+  mac_->enqueue(packet(3, 3), 3);
+  ASSERT_EQ(node_.dropped.size(), 2U);
+  EXPECT_EQ(node_.dropped[0].packet.uid, 1U);
+  EXPECT_EQ(node_.dropped[1].packet.uid, 2U);
+  EXPECT_EQ(drops(DropReason::buffer_timeout), 2U);
+  ASSERT_EQ(node_.link_failures.size(), 2U);
+  EXPECT_EQ(node_.link_failures[0].next_hop, 1U);
+  EXPECT_EQ(node_.link_failures[1].next_hop, 2U);
+  mac_->enqueue(packet(4, 3), 3);  // packets 3 and 4 fill the queue
+  mac_->enqueue(packet(5, 3), 3);
+  EXPECT_EQ(drops(DropReason::queue_full), 1U);
+  EXPECT_EQ(node_.dropped.back().packet.uid, 5U);
 }
 
 }  // namespace
