@@ -113,7 +113,7 @@ Dcf80211::Dcf80211(const PluginArgs& args)
       short_retry_limit_(static_cast<std::uint32_t>(args.params.integer("short_retry_limit"))),
       long_retry_limit_(static_cast<std::uint32_t>(args.params.integer("long_retry_limit"))),
       report_every_drop_(args.params.text("link_failure_reports") == "every_drop"),
-      wipe_expired_(args.params.text("mpdu_lifetime") == "ns3"),
+      ns3_lifetime_(args.params.text("mpdu_lifetime") == "ns3"),
       station_retry_counts_(args.params.text("retry_counters") == "station") {}
 
 void Dcf80211::attach(MacContext& context) {
@@ -143,10 +143,9 @@ Dcf80211::RetryCounts& Dcf80211::retry_counts() {
 
 std::vector<InterfaceQueue::Item> Dcf80211::wipe_expired() {
   std::vector<InterfaceQueue::Item> expired;
-  // A broadcast leaves the queue as it goes on the air; an expired exchange has left it.
-  const bool exchange_queued = exchange_ && !exchange_->expired &&
-                               !(exchange_->in_progress && exchange_->next_hop == kBroadcast);
-  if (exchange_queued && queue_.outlived(exchange_->enqueued_at, now())) {
+  // The exchange is still queued while it holds its place: a broadcast gives it up as it goes on
+  // the air, an exchange that expired during its attempt when it expired.
+  if (exchange_ && queue_.holds_place() && queue_.outlived(exchange_->enqueued_at, now())) {
     expired.push_back(
         InterfaceQueue::Item{exchange_->packet, exchange_->next_hop, exchange_->enqueued_at});
     queue_.release();
@@ -166,7 +165,7 @@ std::vector<InterfaceQueue::Item> Dcf80211::wipe_expired() {
 // Reports to routing may come back at once as new packets (a RERR): the queue's reports are made
 // once the MAC's own state is settled.
 void Dcf80211::enqueue(Packet packet, NodeId next_hop) {
-  if (wipe_expired_) {
+  if (ns3_lifetime_) {
     // ns-3.37's Txop::Queue looks for frames to send, wiping expired ones, before it queues the
     // arrival; their drops are reported first, so that a RERR they cause is queued first.
     drop_expired(wipe_expired());
@@ -201,8 +200,11 @@ bool Dcf80211::take_next_exchange(std::vector<InterfaceQueue::Item>& expired) {
   if (!item) return false;
   const std::uint32_t mpdu_bytes = header_bytes_ + item->packet.size_bytes();
   const bool use_rts = item->next_hop != kBroadcast && mpdu_bytes > rts_threshold_bytes_;
-  exchange_ = Exchange{std::move(item->packet), item->next_hop, item->enqueued_at,
-                       next_sequence_++,        use_rts,        RetryCounts{}};
+  exchange_ = Exchange{.packet = std::move(item->packet),
+                       .next_hop = item->next_hop,
+                       .enqueued_at = item->enqueued_at,
+                       .sequence = next_sequence_++,
+                       .use_rts = use_rts};
   return true;
 }
 
@@ -250,7 +252,7 @@ void Dcf80211::access_granted() {
   // ns-3.37's FrameExchangeManager::StartTransmission wipes the expired packets first, then
   // sends the head of the queue; with none left it releases the channel with a new backoff.
   std::vector<InterfaceQueue::Item> expired;
-  if (wipe_expired_) {
+  if (ns3_lifetime_) {
     expired = wipe_expired();
     if (!exchange_) new_backoff();
   }
@@ -358,7 +360,7 @@ void Dcf80211::exchange_failed() {
   exchange_->retry = true;
   exchange_->in_progress = false;
   std::vector<InterfaceQueue::Item> expired;
-  if (wipe_expired_) {
+  if (ns3_lifetime_) {
     // ns-3.37's Txop::NotifyChannelReleased: the backoff is drawn, then the expired packets are
     // wiped; access is requested only if a packet is left. An exchange that expired during the
     // attempt is not sent again: the next packet inherits the contention window.

@@ -51,7 +51,7 @@ class Dcf80211 final : public Mac {
     SimTime enqueued_at;
     std::uint16_t sequence;
     bool use_rts;
-    RetryCounts retries;
+    RetryCounts retries{};
     bool retry = false;
     bool in_progress = false;  // an attempt is on the air or awaiting its response
     // Its lifetime ran out during an attempt (mpdu_lifetime: ns3): it was reported dropped and
@@ -94,7 +94,7 @@ class Dcf80211 final : public Mac {
   std::uint32_t short_retry_limit_;
   std::uint32_t long_retry_limit_;
   bool report_every_drop_;     // link_failure_reports: every_drop (ns-3) or retry_limit
-  bool wipe_expired_;          // mpdu_lifetime: ns3 (wipes at arrival, access, retry) or at_head
+  bool ns3_lifetime_;          // mpdu_lifetime: ns3 (wipes at arrival, access, retry) or at_head
   bool station_retry_counts_;  // retry_counters: station (ns-3.37) or per_packet
   RetryCounts station_retries_;
 

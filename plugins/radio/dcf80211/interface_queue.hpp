@@ -40,6 +40,8 @@ class InterfaceQueue {
   [[nodiscard]] bool outlived(SimTime enqueued_at, SimTime now) const {
     return now - enqueued_at > max_delay_;
   }
+  // Whether the packet last popped still holds its place (not yet released).
+  [[nodiscard]] bool holds_place() const { return place_held_; }
   [[nodiscard]] std::size_t size() const { return items_.size(); }
   [[nodiscard]] bool empty() const { return items_.empty(); }
   // `limit` places taken, by waiting packets and the popped one not yet released.
