@@ -13,7 +13,8 @@ time of both network halves measured on every row.
 Both sides run as ns-3 users run ns-3 by default: ARP by request and reply (SwarmNet
 `network.arp: ns3`, the replay's default) and AODV with layer-2 feedback (SwarmNet
 `link_layer_feedback: true`); AODV keeps ns-3.37's sequence-number and control-message rules
-(validation_runner.NS3_AODV_RULES) either way. --setup aligned (or --aligned) runs the setup the
+(validation_runner.NS3_AODV_RULES) and dcf80211 ns-3.37's MPDU lifetime and station retry
+counts (scripts/ns3_dcf80211_rules.py) either way. --setup aligned (or --aligned) runs the setup the
 grid was aligned in before issue 19: no ARP frame (SwarmNet `network.arp: static`, the replay's
 --aligned) and no layer-2 feedback; --setup static_arp the default stack with every address
 resolved beforehand on both sides (no ARP frame, layer-2 feedback kept), to tell what of a row's

@@ -13,6 +13,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
 import compare  # noqa: E402
 from ns3_aodv_rules import NS3_AODV_RULES  # noqa: E402
+import ns3_dcf80211_rules  # noqa: E402
 
 SOURCE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -60,7 +61,9 @@ DISK_NETWORK = {
 # no node answers for that neighbour until its next HELLO (without it SwarmNet's discoveries end a
 # ring earlier: issue 19's delay). Its four control-message rules decide how RREPs, RERRs and the
 # buffer move under load (docs/validation.md, "The saturated rows"). SwarmNet's AODV is compared
-# like for like: ns-3's variant of the protocol, not SwarmNet's default.
+# like for like: ns-3's variant of the protocol, not SwarmNet's default. So is its 802.11 MAC:
+# dcf80211 with ns-3.37's MPDU lifetime and station retry counts (scripts/ns3_dcf80211_rules.py),
+# which change a run only where packets wait longer than 500 ms.
 # "replay_arp_entries" is what the replay reports for its ARP entries (its JSON's arp.entries) under
 # the options of "replay"; ARP frames go on the air only with "none" (nothing resolved beforehand).
 SETUPS = {
@@ -119,15 +122,16 @@ def detect_stack(swarmnet, scenario):
 
 
 def swarmnet_overrides(stack, routing, setup="default"):
-    """--set arguments that select the stack, ARP and the routing protocol (JSON is YAML flow)."""
+    """--set arguments that select the stack, ARP and the routing protocol (JSON is YAML flow),
+    and on the 802.11 stack ns-3.37's MAC rules (scripts/ns3_dcf80211_rules.py)."""
     arp = SETUPS[setup]["arp"]
     if stack == "disk":
         network = dict(DISK_NETWORK)
         network["routing"] = routing_choice(routing, setup)
         network["arp"] = arp
         return ["--set", "network=" + json.dumps(network)]
-    return ["--set", "network.routing=" + json.dumps(routing_choice(routing, setup)),
-            "--set", "network.arp=" + arp]
+    return (["--set", "network.routing=" + json.dumps(routing_choice(routing, setup)),
+             "--set", "network.arp=" + arp] + ns3_dcf80211_rules.set_arguments())
 
 
 def replay_options(setup="default"):
