@@ -165,28 +165,19 @@ std::vector<InterfaceQueue::Item> Dcf80211::wipe_expired() {
 // Reports to routing may come back at once as new packets (a RERR): the queue's reports are made
 // once the MAC's own state is settled.
 void Dcf80211::enqueue(Packet packet, NodeId next_hop) {
+  std::vector<InterfaceQueue::Item> expired;
   if (ns3_lifetime_) {
     // ns-3.37's Txop::Queue looks for frames to send, wiping expired ones, before it queues the
     // arrival; their drops are reported first, so that a RERR they cause is queued first.
     drop_expired(wipe_expired());
-    if (queue_.full()) {
-      drop_mpdu(packet, next_hop, DropReason::queue_full);
-      return;
-    }
-    const bool idle_station = queue_.empty() && !exchange_;
-    queue_.push(std::move(packet), next_hop, now());
-    if (idle_station) start_exchange_if_needed(true);
-    return;
-  }
-  std::vector<InterfaceQueue::Item> expired;
-  if (queue_.full()) {
+  } else if (queue_.full()) {
     // ns-3's WifiMacQueue::Insert: a full queue first drops its expired packets.
     expired = queue_.take_expired(now());
-    if (queue_.full()) {
-      drop_expired(expired);
-      drop_mpdu(packet, next_hop, DropReason::queue_full);
-      return;
-    }
+  }
+  if (queue_.full()) {
+    drop_expired(expired);
+    drop_mpdu(packet, next_hop, DropReason::queue_full);
+    return;
   }
   const bool idle_station = queue_.empty() && !exchange_;
   queue_.push(std::move(packet), next_hop, now());

@@ -20,7 +20,7 @@ using testing::TestScheduler;
 class Dcf80211LinkFeedback : public ::testing::Test {
  protected:
   void make(std::int64_t queue_limit, double max_delay_s, const std::string& reports,
-            const std::string& lifetime = "ns3") {
+            const std::string& lifetime = "at_head") {
     mac_ = std::make_unique<Dcf80211>(plugin_args<Dcf80211>({{"queue_limit", queue_limit},
                                                              {"queue_max_delay_s", max_delay_s},
                                                              {"short_retry_limit", std::int64_t{1}},
@@ -169,7 +169,7 @@ TEST_F(Dcf80211LinkFeedback, AFullQueueDropsItsExpiredPacketsBeforeRefusingOne) 
 
 // With mpdu_lifetime: ns3 the packet on the air expires too: both places are freed.
 TEST_F(Dcf80211LinkFeedback, AnArrivalWipesThePacketOnTheAirWhenItsLifetimeEnded) {
-  make(2, 0.001, "every_drop");
+  make(2, 0.001, "every_drop", "ns3");
   mac_->enqueue(packet(1, 1), 1);
   mac_->enqueue(packet(2, 2), 2);
   scheduler_.run_for(from_seconds(0.002));  // packet 1 on the air, both outlived 1 ms
