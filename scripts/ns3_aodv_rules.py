@@ -12,7 +12,8 @@ more), and ns-3's IP under its messages (a RREP, RERR or RREP-ACK takes the rout
 neighbour, and a node on the way relays it as IP; a message heard refreshes the route to its
 sender before AODV reads it), and its RERRs (a broken link or a RERR reports routes in any
 state, and a broken link the neighbour itself; a RREP puts a new entry, without precursors, in
-the route's place). The ns-3 engine refuses AODV without them;
+the route's place), and its RREQ rate limit (every refused request waits on its own for the next
+window). The ns-3 engine refuses AODV without them;
 the validation grid and the engine benchmark give them to SwarmNet's side so that both sides run
 the same protocol.
 """
@@ -31,6 +32,7 @@ NS3_AODV_RULES = {
     "ip_input_refreshes_routes": True,
     "rerr_covers_routes_in_any_state": True,
     "rrep_replaces_route": True,
+    "rate_limited_requests_stack": True,
 }
 
 

@@ -151,7 +151,7 @@ struct Ns3FixedBehaviour {
   std::string_view behaviour;  // what ns-3 does, for the refusal
 };
 
-inline constexpr std::array<Ns3FixedBehaviour, 20> kNs3FixedBehaviour{{
+inline constexpr std::array<Ns3FixedBehaviour, 21> kNs3FixedBehaviour{{
     {"aodv", "increment_seqno_on_break", 0,
      "ns-3.37's AODV does not increment a broken route's destination sequence number"},
     {"aodv", "rreq_invalidates_sender_seqno", 1,
@@ -184,6 +184,9 @@ inline constexpr std::array<Ns3FixedBehaviour, 20> kNs3FixedBehaviour{{
     {"aodv", "rrep_replaces_route", 1,
      "ns-3.37's AODV puts a new entry, without precursors, in the place of a route a RREP "
      "updates"},
+    {"aodv", "rate_limited_requests_stack", 1,
+     "ns-3.37's AODV schedules every RREQ its rate limit refuses on its own, for when the window "
+     "turns"},
     {"aodv", "enable_local_repair", 0, "ns-3.37's AODV has no local repair"},
     {"aodv", "rrep_ack_required", 0,
      "ns-3.37's AODV requests a RREP-ACK only when an intermediate node answers"},

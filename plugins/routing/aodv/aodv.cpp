@@ -99,7 +99,9 @@ PluginInfo Aodv::info() {
       "neighbour invalidates the routes through it with their sequence number incremented "
       "(unless increment_seqno_on_break is false, ns-3.37's rule), and a RERR goes to the "
       "precursors (unicast to a single one, broadcast otherwise), which do the same. RREQs and "
-      "RERRs are rate-limited per second; "
+      "RERRs are rate-limited per second (windows of one second from 0 s); a refused RREQ is "
+      "tried again 100 us after the window turns, once per destination (with "
+      "rate_limited_requests_stack, ns-3.37's rule, once per packet or retry that asked); "
       "broadcast control packets wait a random jitter of a whole number of milliseconds up to "
       "broadcast_jitter_max_s drawn from the node's stream (the first HELLO likewise, up to "
       "hello_start_jitter_max_s). A unicast control message goes to its neighbour over a valid "
@@ -118,7 +120,8 @@ PluginInfo Aodv::info() {
       "as no_route (with a RERR to its source). Control messages have their RFC sizes; the "
       "RREQ's reserved byte carries its TTL. Counters (routing.*): control_rreq, control_rrep, "
       "control_rerr, control_rrep_ack, control_hello (transmissions, originated or relayed), "
-      "route_discoveries, link_failures (MAC reports received), link_breaks (breaks that "
+      "route_discoveries, rreq_rate_limited (requests the rate limit put off), link_failures (MAC "
+      "reports received), link_breaks (breaks that "
       "invalidated a route), blacklisted, local_repairs, duplicates, malformed (control "
       "messages that do not decode, or that name a node outside the network as a RREQ's "
       "originator, a RREP's destination or originator, or their datagram's source), "
@@ -133,7 +136,9 @@ PluginInfo Aodv::info() {
       "where ns-3 reports routes in any state (rerr_covers_routes_in_any_state); a RREP updates a "
       "route's fields and keeps its precursors, where ns-3 replaces the entry, precursors and all, "
       "and takes a RREP for itself over a route in search whatever its freshness "
-      "(rrep_replaces_route); a unicast message "
+      "(rrep_replaces_route); a RREQ the rate limit refuses waits once per destination, where "
+      "ns-3 schedules every refused request on its own (rate_limited_requests_stack); a unicast "
+      "message "
       "goes straight to its neighbour, where "
       "ns-3's IP takes the route to it (control_via_route_to_neighbor), and only AODV's own "
       "rules refresh routes on a message heard, where ns-3's IP refreshes the sender's too "
@@ -407,14 +412,7 @@ void Aodv::send_queued(NodeId destination) {
 
 void Aodv::send_request(NodeId destination) {
   if (!rate_allows(rreq_count_, params_.rreq_rate_limit)) {
-    // Try again just after the rate-limit window turns.
-    const SimTime delay = next_rate_window() - now() + kRateRetryDelay;
-    auto& timer = discovery_timers_[destination];
-    context_->cancel(timer);
-    timer = context_->schedule(delay, [this, destination] {
-      discovery_timers_.erase(destination);
-      send_request(destination);
-    });
+    defer_request(destination);
     return;
   }
   const SimTime t = now();
@@ -451,6 +449,25 @@ void Aodv::send_request(NodeId destination) {
   context_->count("route_discoveries");
   originate_request(rreq, ttl);
   schedule_request_retry(destination);
+}
+
+// A request the rate limit refuses is tried again just after the window turns (ns-3.37's
+// SendRequest: the rate-limit timer's delay left + 100 us).
+void Aodv::defer_request(NodeId destination) {
+  context_->count("rreq_rate_limited");
+  const SimTime delay = next_rate_window() - now() + kRateRetryDelay;
+  if (params_.rate_limited_requests_stack) {
+    // ns-3.37 schedules every refused request on its own, with no timer to cancel: each packet
+    // and each retry that asked sends its own RREQ when the window turns.
+    context_->schedule(delay, [this, destination] { send_request(destination); });
+    return;
+  }
+  auto& timer = discovery_timers_[destination];
+  context_->cancel(timer);
+  timer = context_->schedule(delay, [this, destination] {
+    discovery_timers_.erase(destination);
+    send_request(destination);
+  });
 }
 
 void Aodv::originate_request(Rreq rreq, std::uint32_t ttl) {
@@ -519,10 +536,11 @@ void Aodv::give_up(NodeId destination) {
 bool Aodv::discovery_under_way(NodeId destination) {
   if (!params_.queue_released_by_rrep_only) return discovery_timers_.contains(destination);
   // ns-3.37 (DeferredRouteOutput) asks for a route unless the entry is in search. A rate-limited
-  // request has no entry in search yet: its retry timer stands for it.
+  // request has no entry in search yet: its retry timer stands for it, unless refused requests
+  // stack as in ns-3, where every packet asks again.
   const RouteEntry* route = table_.find(destination, now());
   if (route != nullptr) return route->state == RouteState::in_search;
-  return discovery_timers_.contains(destination);
+  return !params_.rate_limited_requests_stack && discovery_timers_.contains(destination);
 }
 
 void Aodv::end_search_early(const RouteEntry& route) {

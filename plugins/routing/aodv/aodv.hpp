@@ -64,6 +64,7 @@ class Aodv final : public Routing {
 
   // Route discovery.
   void send_request(NodeId destination);
+  void defer_request(NodeId destination);
   // Fills in what every RREQ this node originates carries (flags, originator, sequence number,
   // id, TTL), notes its id as seen and broadcasts it.
   void originate_request(Rreq rreq, std::uint32_t ttl);

@@ -187,6 +187,14 @@ std::vector<ParamSpec> parameter_schema() {
                  "replaces a route in search whatever its freshness; false: the RREP updates the "
                  "route's next hop, hop count, number and lifetime and its precursors stay, and "
                  "only a fresher RREP updates a route (RFC 3561 6.7)"),
+      bool_param("rate_limited_requests_stack", false,
+                 "true: ns-3.37's rule (SendRequest, DeferredRouteOutput): a RREQ refused by "
+                 "rreq_rate_limit is scheduled on its own for just after the one-second window "
+                 "turns, and every packet that finds no route in search asks again meanwhile, so "
+                 "the refused requests pile up and each sends a RREQ when its turn comes, the "
+                 "TTL rising and the retries counting with each (the window's limit still "
+                 "holds); false: one refused request per destination waits for the next window, "
+                 "and packets that arrive meanwhile wait with it"),
       bool_param("enable_broadcast", true,
                  "rebroadcast application broadcasts (with duplicate detection and data_ttl)"),
       bool_param("enable_local_repair", false,
@@ -251,6 +259,7 @@ AodvParameters parameters_from(const ParamSet& params) {
   p.ip_input_refreshes_routes = params.boolean("ip_input_refreshes_routes");
   p.rerr_covers_routes_in_any_state = params.boolean("rerr_covers_routes_in_any_state");
   p.rrep_replaces_route = params.boolean("rrep_replaces_route");
+  p.rate_limited_requests_stack = params.boolean("rate_limited_requests_stack");
   p.enable_broadcast = params.boolean("enable_broadcast");
   p.enable_local_repair = params.boolean("enable_local_repair");
   p.local_add_ttl = count_param(params, "local_add_ttl");

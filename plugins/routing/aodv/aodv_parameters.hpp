@@ -52,6 +52,8 @@ struct AodvParameters {
   bool ip_input_refreshes_routes = false;
   bool rerr_covers_routes_in_any_state = false;
   bool rrep_replaces_route = false;
+  // ns-3.37's rate limit: every refused RREQ is sent on its own once the window turns.
+  bool rate_limited_requests_stack = false;
   bool enable_broadcast = true;
   bool enable_local_repair = false;
   std::uint32_t local_add_ttl = 2;

@@ -28,6 +28,9 @@
 // And what a RREP does to the route it updates:
 //   rrep_replaces_route              RecvReply puts a new entry in the route's place (no
 //                                    precursors), and over a route in search for this node.
+// And its RREQ rate limit:
+//   rate_limited_requests_stack      SendRequest schedules every refused request on its own for
+//                                    100 us after the window turns; each packet asks again.
 // Why they matter: docs/validation.md, "The saturated rows, and ns-3's control-message rules".
 #include <gtest/gtest.h>
 
@@ -816,6 +819,72 @@ TEST_P(RrepReplacesRoute, ARrepForThisNodeTakesARouteInSearchFresherOrNot) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RrepReplacesRoute, ::testing::Bool(), reading_name);
+
+// ---- rate_limited_requests_stack ----------------------------------------------------------------
+
+// With a limit of two RREQs a second, searches for 1 and 2 use up the first window; three packets
+// for 3 then find the limit reached. Every ring is the whole network (ttl_start 35), so no
+// retry falls before 2.8 s. (queue_released_by_rrep_only as in ns-3, where a packet asks for a
+// route unless one is in search.)
+class RateLimitedRequestsStack : public BothReadings {
+ protected:
+  void three_packets_past_the_limit() {
+    make_with("rate_limited_requests_stack",
+              {{"rreq_rate_limit", 2}, {"ttl_start", 35}, {"queue_released_by_rrep_only", true}});
+    aodv_->send(data_to(1, 1));
+    aodv_->send(data_to(2, 2));
+    for (std::uint64_t uid = 3; uid <= 5; ++uid) aodv_->send(data_to(3, uid));
+    run(0.011);  // past the broadcast jitter
+    ASSERT_EQ(sent<Rreq>().size(), 2U);
+  }
+  // In which rate-limit window (0: the first second) each of this node's RREQs for 3 was
+  // originated: a request let through at a turn leaves within the 10 ms jitter after it.
+  [[nodiscard]] std::vector<std::int64_t> windows_of_requests_for_three() const {
+    std::vector<std::int64_t> out;
+    for (const Sent& s : sent<Rreq>()) {
+      if (std::get<Rreq>(s.message).destination != 3) continue;
+      const SimTime into_window = s.at % std::chrono::seconds(1);
+      EXPECT_GE(into_window, std::chrono::microseconds(100));  // 100 us after the turn
+      EXPECT_LE(into_window, std::chrono::microseconds(10100));
+      out.push_back(s.at / std::chrono::seconds(1));
+    }
+    return out;
+  }
+};
+
+TEST_P(RateLimitedRequestsStack, EachRefusedRequestGoesOutAtTheTurnOrOneStandsForAll) {
+  three_packets_past_the_limit();
+  EXPECT_TRUE(windows_of_requests_for_three().empty());
+  EXPECT_EQ(node_.counter("rreq_rate_limited"), GetParam() ? 3U : 1U);
+  run(1.02);
+  if (GetParam()) {
+    // ns-3: two of the three refused requests go out as the window turns, each counting as a
+    // try at the network's diameter; the third is refused again.
+    EXPECT_EQ(windows_of_requests_for_three(), (std::vector<std::int64_t>{1, 1}));
+    EXPECT_EQ(route(3)->rreq_count, 2U);
+    EXPECT_EQ(node_.counter("rreq_rate_limited"), 4U);
+  } else {
+    EXPECT_EQ(windows_of_requests_for_three(), std::vector<std::int64_t>{1});
+    EXPECT_EQ(route(3)->rreq_count, 1U);
+    EXPECT_EQ(node_.counter("rreq_rate_limited"), 1U);
+  }
+  EXPECT_EQ(route(3)->state, RouteState::in_search);
+  EXPECT_EQ(aodv_->request_queue().size(), 5U);  // every packet still waits for a route
+}
+
+TEST_P(RateLimitedRequestsStack, ARequestRefusedAgainGoesOutAtTheNextTurn) {
+  three_packets_past_the_limit();
+  run(2.5);
+  if (GetParam()) {
+    EXPECT_EQ(windows_of_requests_for_three(), (std::vector<std::int64_t>{1, 1, 2}));
+    EXPECT_EQ(route(3)->rreq_count, 3U);
+  } else {
+    // One request stood for the three; its retry is due 2.8 s after it.
+    EXPECT_EQ(windows_of_requests_for_three(), std::vector<std::int64_t>{1});
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RateLimitedRequestsStack, ::testing::Bool(), reading_name);
 
 }  // namespace
 }  // namespace swarmnet::aodv
