@@ -120,9 +120,9 @@ PluginInfo Aodv::info() {
       "as no_route (with a RERR to its source). Control messages have their RFC sizes; the "
       "RREQ's reserved byte carries its TTL. Counters (routing.*): control_rreq, control_rrep, "
       "control_rerr, control_rrep_ack, control_hello (transmissions, originated or relayed), "
-      "route_discoveries, rreq_rate_limited (requests the rate limit put off), link_failures (MAC "
-      "reports received), link_breaks (breaks that "
-      "invalidated a route), blacklisted, local_repairs, duplicates, malformed (control "
+      "route_discoveries, rreq_rate_limited (requests the rate limit put off), link_failures "
+      "(MAC reports received), link_breaks (breaks that invalidated a route), blacklisted, "
+      "local_repairs, duplicates, malformed (control "
       "messages that do not decode, or that name a node outside the network as a RREQ's "
       "originator, a RREP's destination or originator, or their datagram's source), "
       "rrep_ttl_drops (with rrep_ip_ttl). "
@@ -138,8 +138,7 @@ PluginInfo Aodv::info() {
       "and takes a RREP for itself over a route in search whatever its freshness "
       "(rrep_replaces_route); a RREQ the rate limit refuses waits once per destination, where "
       "ns-3 schedules every refused request on its own (rate_limited_requests_stack); a unicast "
-      "message "
-      "goes straight to its neighbour, where "
+      "message goes straight to its neighbour, where "
       "ns-3's IP takes the route to it (control_via_route_to_neighbor), and only AODV's own "
       "rules refresh routes on a message heard, where ns-3's IP refreshes the sender's too "
       "(ip_input_refreshes_routes). One more, "
@@ -535,9 +534,9 @@ void Aodv::give_up(NodeId destination) {
 
 bool Aodv::discovery_under_way(NodeId destination) {
   if (!params_.queue_released_by_rrep_only) return discovery_timers_.contains(destination);
-  // ns-3.37 (DeferredRouteOutput) asks for a route unless the entry is in search. A rate-limited
-  // request has no entry in search yet: its retry timer stands for it, unless refused requests
-  // stack as in ns-3, where every packet asks again.
+  // ns-3.37 (DeferredRouteOutput) asks for a route unless the entry is in search. Without an
+  // entry, SwarmNet's reading lets a waiting timer (a refused request's, or a retry's) stand for
+  // the search; with rate_limited_requests_stack, as in ns-3, nothing does: every packet asks.
   const RouteEntry* route = table_.find(destination, now());
   if (route != nullptr) return route->state == RouteState::in_search;
   return !params_.rate_limited_requests_stack && discovery_timers_.contains(destination);
