@@ -13,7 +13,8 @@ neighbour, and a node on the way relays it as IP; a message heard refreshes the 
 sender before AODV reads it), and its RERRs (a broken link or a RERR reports routes in any
 state, and a broken link the neighbour itself; a RREP puts a new entry, without precursors, in
 the route's place), and its RREQ rate limit (every refused request waits on its own for the next
-window). The ns-3 engine refuses AODV without them;
+window), and what a RREP for this node does to its discovery (it ends only a search it finds under
+way; the buffer leaves over the route as it stands). The ns-3 engine refuses AODV without them;
 the validation grid and the engine benchmark give them to SwarmNet's side so that both sides run
 the same protocol.
 """
@@ -33,6 +34,7 @@ NS3_AODV_RULES = {
     "rerr_covers_routes_in_any_state": True,
     "rrep_replaces_route": True,
     "rate_limited_requests_stack": True,
+    "rrep_ends_search_only": True,
 }
 
 

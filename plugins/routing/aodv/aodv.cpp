@@ -136,7 +136,10 @@ PluginInfo Aodv::info() {
       "where ns-3 reports routes in any state (rerr_covers_routes_in_any_state); a RREP updates a "
       "route's fields and keeps its precursors, where ns-3 replaces the entry, precursors and all, "
       "and takes a RREP for itself over a route in search whatever its freshness "
-      "(rrep_replaces_route); a RREQ the rate limit refuses waits once per destination, where "
+      "(rrep_replaces_route); a RREP for this node ends its discovery and releases the buffer "
+      "when it leaves the route valid, where ns-3 ends only a discovery whose route the RREP "
+      "found in search and sends the buffer over the route whatever its state "
+      "(rrep_ends_search_only); a RREQ the rate limit refuses waits once per destination, where "
       "ns-3 schedules every refused request on its own (rate_limited_requests_stack); a unicast "
       "message goes straight to its neighbour, where "
       "ns-3's IP takes the route to it (control_via_route_to_neighbor), and only AODV's own "
@@ -399,6 +402,18 @@ void Aodv::send_queued(NodeId destination) {
       continue;
     }
     const RouteEntry copy = *route;
+    if (packet.is_control()) {
+      transmit_control(std::move(packet), copy);
+    } else {
+      transmit_data(std::move(packet), copy);
+    }
+  }
+}
+
+void Aodv::send_queued_over(NodeId destination, const RouteEntry& route) {
+  if (route.state == RouteState::in_search) return;
+  const RouteEntry copy = route;
+  for (Packet& packet : queue_.take(destination, now())) {
     if (packet.is_control()) {
       transmit_control(std::move(packet), copy);
     } else {
@@ -755,6 +770,8 @@ void Aodv::receive_reply(Rrep rrep, NodeId from) {
 
   // Forward route to the destination (RFC 3561 6.7).
   RouteEntry* to_destination = table_.find(rrep.destination, t);
+  const bool was_in_search =
+      to_destination != nullptr && to_destination->state == RouteState::in_search;
   // ns-3.37 (RecvReply) also takes a RREP for this node over a route in search, fresher or not.
   const bool replaces_search = params_.rrep_replaces_route && rrep.originator == self_ &&
                                to_destination != nullptr &&
@@ -778,7 +795,13 @@ void Aodv::receive_reply(Rrep rrep, NodeId from) {
   }
 
   if (rrep.originator == self_) {
-    if (to_destination->is_valid()) {
+    if (params_.rrep_ends_search_only) {
+      // ns-3.37 (RecvReply) cancels the discovery timer only for a route the RREP found in
+      // search: one a HELLO made valid first keeps its timer, which deletes the route if it has
+      // broken by then. The buffer leaves over the route as it stands, whatever its state.
+      if (was_in_search) end_discovery(rrep.destination);
+      send_queued_over(rrep.destination, *to_destination);
+    } else if (to_destination->is_valid()) {
       end_discovery(rrep.destination);
       send_queued(rrep.destination);
     }

@@ -61,6 +61,8 @@ class Aodv final : public Routing {
   void buffer(Packet packet);
   void arm_queue_timer();
   void send_queued(NodeId destination);
+  // Every packet waiting for `destination` over `route` (unless in search), whatever its state.
+  void send_queued_over(NodeId destination, const RouteEntry& route);
 
   // Route discovery.
   void send_request(NodeId destination);

@@ -195,6 +195,15 @@ std::vector<ParamSpec> parameter_schema() {
                  "TTL rising and the retries counting with each (the window's limit still "
                  "holds); false: one refused request per destination waits for the next window, "
                  "and packets that arrive meanwhile wait with it"),
+      bool_param("rrep_ends_search_only", false,
+                 "true: ns-3.37's rule (RecvReply): a RREP for this node cancels the discovery "
+                 "timer only if it finds the route in search, and sends the buffered packets "
+                 "over the route as it stands after the update, whatever its state; a route "
+                 "that a HELLO or another AODV message made valid first keeps its timer, and "
+                 "if the route has broken when it fires the route is deleted, its sequence "
+                 "number with it, and the packets waiting for it dropped; false: a RREP that "
+                 "leaves the route valid ends the discovery and sends the buffer over it (RFC "
+                 "3561 6.7)"),
       bool_param("enable_broadcast", true,
                  "rebroadcast application broadcasts (with duplicate detection and data_ttl)"),
       bool_param("enable_local_repair", false,
@@ -260,6 +269,7 @@ AodvParameters parameters_from(const ParamSet& params) {
   p.rerr_covers_routes_in_any_state = params.boolean("rerr_covers_routes_in_any_state");
   p.rrep_replaces_route = params.boolean("rrep_replaces_route");
   p.rate_limited_requests_stack = params.boolean("rate_limited_requests_stack");
+  p.rrep_ends_search_only = params.boolean("rrep_ends_search_only");
   p.enable_broadcast = params.boolean("enable_broadcast");
   p.enable_local_repair = params.boolean("enable_local_repair");
   p.local_add_ttl = count_param(params, "local_add_ttl");

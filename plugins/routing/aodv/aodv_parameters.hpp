@@ -54,6 +54,8 @@ struct AodvParameters {
   bool rrep_replaces_route = false;
   // ns-3.37's rate limit: every refused RREQ is sent on its own once the window turns.
   bool rate_limited_requests_stack = false;
+  // ns-3.37's RecvReply: a RREP ends only a discovery whose route it found in search.
+  bool rrep_ends_search_only = false;
   bool enable_broadcast = true;
   bool enable_local_repair = false;
   std::uint32_t local_add_ttl = 2;

@@ -31,6 +31,10 @@
 // And its RREQ rate limit:
 //   rate_limited_requests_stack      SendRequest schedules every refused request on its own for
 //                                    100 us after the window turns; each packet asks again.
+// And what a RREP for this node does to its discovery:
+//   rrep_ends_search_only            RecvReply cancels the discovery timer only for a route the
+//                                    RREP found in search, and sends the buffer over the route
+//                                    whatever its state.
 // Why they matter: docs/validation.md, "The saturated rows, and ns-3's control-message rules".
 #include <gtest/gtest.h>
 
@@ -76,6 +80,16 @@ class AodvNs3ControlRules : public AodvOneNode {
     rrep.hop_count = hops_before;
     rrep.lifetime_ms = 10000;
     rrep.ttl = ttl;
+    hear(rrep, from);
+  }
+  // A RREP for this node about `destination` with number `seq`, `hops_before` hops behind `from`.
+  void rrep_for_us(NodeId from, NodeId destination, std::uint32_t seq, std::uint8_t hops_before) {
+    Rrep rrep;
+    rrep.destination = destination;
+    rrep.destination_seq = seq;
+    rrep.originator = 0;
+    rrep.hop_count = hops_before;
+    rrep.lifetime_ms = 10000;
     hear(rrep, from);
   }
   void data_from(NodeId neighbor, NodeId source, NodeId destination, std::uint64_t uid) {
@@ -775,19 +789,7 @@ INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RerrCoversRoutesInAnyState, ::testing::Bool(
 
 // ---- rrep_replaces_route ------------------------------------------------------------------------
 
-class RrepReplacesRoute : public BothReadings {
- protected:
-  // A RREP for this node about `destination` with number `seq`, `hops_before` hops behind `from`.
-  void rrep_for_us(NodeId from, NodeId destination, std::uint32_t seq, std::uint8_t hops_before) {
-    Rrep rrep;
-    rrep.destination = destination;
-    rrep.destination_seq = seq;
-    rrep.originator = 0;
-    rrep.hop_count = hops_before;
-    rrep.lifetime_ms = 10000;
-    hear(rrep, from);
-  }
-};
+using RrepReplacesRoute = BothReadings;
 
 TEST_P(RrepReplacesRoute, AFresherRrepForgetsTheRoutesPrecursorsOrKeepsThem) {
   make_with("rrep_replaces_route");
@@ -885,6 +887,81 @@ TEST_P(RateLimitedRequestsStack, ARequestRefusedAgainGoesOutAtTheNextTurn) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RateLimitedRequestsStack, ::testing::Bool(), reading_name);
+
+// ---- rrep_ends_search_only ----------------------------------------------------------------------
+
+// This node searches for its neighbour 8 (a one-hop ring: the timer is 2 * 40 ms * (1 + 2) =
+// 240 ms), and 8's HELLO makes the route valid before 8's RREP arrives; the packet waits for the
+// RREP (queue_released_by_rrep_only), and a break keeps the route's number, as in ns-3.
+class RrepEndsSearchOnly : public BothReadings {
+ protected:
+  void search_answered_after_a_hello() {
+    make_with("rrep_ends_search_only", {{"queue_released_by_rrep_only", true},
+                                        {"rrep_replaces_route", true},
+                                        {"increment_seqno_on_break", false}});
+    aodv_->send(data_to(8, 901));
+    ASSERT_EQ(route(8)->state, RouteState::in_search);
+    hello_from(8, 5);
+    ASSERT_TRUE(route(8)->is_valid());
+    ASSERT_TRUE(data_sent().empty());
+    rrep_for_us(8, 8, 5, 0);
+    ASSERT_EQ(data_sent(), std::vector<std::uint64_t>{901});  // the RREP sends it either way
+  }
+  // A relayed packet for 8 that the MAC could not deliver: the link to 8 breaks.
+  void link_to_eight_fails() {
+    aodv_->link_failed(PacketBuilder().uid(902).from(3).to(8).message(902).build(), 8);
+    ASSERT_NE(route(8), nullptr);
+    ASSERT_EQ(route(8)->state, RouteState::invalid);
+  }
+};
+
+TEST_P(RrepEndsSearchOnly, ARouteBrokenBeforeTheTimerFiresIsDeletedOrKeptInvalid) {
+  search_answered_after_a_hello();
+  link_to_eight_fails();
+  run(0.3);  // past the discovery timer
+  if (GetParam()) {
+    // ns-3: the timer ran on; finding the route neither valid nor in search it deletes it.
+    EXPECT_EQ(route(8), nullptr);
+  } else {
+    ASSERT_NE(route(8), nullptr);
+    EXPECT_EQ(route(8)->state, RouteState::invalid);
+    EXPECT_EQ(route(8)->seq, 5U);  // kept for the next search's RREQ
+  }
+  EXPECT_EQ(requests_for(8), 1U);  // no second RREQ either way
+}
+
+TEST_P(RrepEndsSearchOnly, ARouteStillValidWhenTheTimerFiresStays) {
+  search_answered_after_a_hello();
+  run(0.3);
+  ASSERT_NE(route(8), nullptr);
+  EXPECT_TRUE(route(8)->is_valid());
+  EXPECT_EQ(data_sent(), std::vector<std::uint64_t>{901});
+  EXPECT_EQ(requests_for(8), 1U);
+}
+
+TEST_P(RrepEndsSearchOnly, AStaleRrepSendsTheBufferOverAnInvalidRouteOrKeepsItWaiting) {
+  search_answered_after_a_hello();
+  aodv_->send(data_to(8, 903));  // over the valid route
+  ASSERT_EQ(data_sent().size(), 2U);
+  link_to_eight_fails();
+  aodv_->send(data_to(8, 904));  // a new search; the packet waits
+  ASSERT_EQ(route(8)->state, RouteState::in_search);
+  hello_from(8, 6);  // valid again; 904 still waits for a RREP
+  link_to_eight_fails();
+  rrep_for_us(4, 8, 5, 1);  // older than the route's number 6: the route stays invalid, via 8
+  ASSERT_EQ(route(8)->state, RouteState::invalid);
+  if (GetParam()) {
+    // ns-3 sends the buffer over the route as it stands: to 8, its next hop.
+    EXPECT_EQ(data_sent(), (std::vector<std::uint64_t>{901, 903, 904}));
+    EXPECT_EQ(node_.to_mac.back().next_hop, 8U);
+    EXPECT_EQ(aodv_->request_queue().size(), 0U);
+  } else {
+    EXPECT_EQ(data_sent(), (std::vector<std::uint64_t>{901, 903}));
+    EXPECT_EQ(aodv_->request_queue().size(), 1U);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RrepEndsSearchOnly, ::testing::Bool(), reading_name);
 
 }  // namespace
 }  // namespace swarmnet::aodv
