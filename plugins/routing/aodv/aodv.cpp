@@ -401,24 +401,22 @@ void Aodv::send_queued(NodeId destination) {
       buffer(std::move(packet));
       continue;
     }
-    const RouteEntry copy = *route;
-    if (packet.is_control()) {
-      transmit_control(std::move(packet), copy);
-    } else {
-      transmit_data(std::move(packet), copy);
-    }
+    const RouteEntry copy = *route;  // transmitting may change the table under `route`
+    transmit_queued(std::move(packet), copy);
   }
 }
 
 void Aodv::send_queued_over(NodeId destination, const RouteEntry& route) {
   if (route.state == RouteState::in_search) return;
-  const RouteEntry copy = route;
-  for (Packet& packet : queue_.take(destination, now())) {
-    if (packet.is_control()) {
-      transmit_control(std::move(packet), copy);
-    } else {
-      transmit_data(std::move(packet), copy);
-    }
+  const RouteEntry copy = route;  // transmitting may change the table under `route`
+  for (Packet& packet : queue_.take(destination, now())) transmit_queued(std::move(packet), copy);
+}
+
+void Aodv::transmit_queued(Packet packet, const RouteEntry& route) {
+  if (packet.is_control()) {
+    transmit_control(std::move(packet), route);
+  } else {
+    transmit_data(std::move(packet), route);
   }
 }
 
@@ -773,9 +771,8 @@ void Aodv::receive_reply(Rrep rrep, NodeId from) {
   const bool was_in_search =
       to_destination != nullptr && to_destination->state == RouteState::in_search;
   // ns-3.37 (RecvReply) also takes a RREP for this node over a route in search, fresher or not.
-  const bool replaces_search = params_.rrep_replaces_route && rrep.originator == self_ &&
-                               to_destination != nullptr &&
-                               to_destination->state == RouteState::in_search;
+  const bool replaces_search =
+      params_.rrep_replaces_route && rrep.originator == self_ && was_in_search;
   if (to_destination == nullptr || replaces_search ||
       fresher(*to_destination, rrep.destination_seq, hops)) {
     if (to_destination == nullptr) {

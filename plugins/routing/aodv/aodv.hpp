@@ -63,6 +63,9 @@ class Aodv final : public Routing {
   void send_queued(NodeId destination);
   // Every packet waiting for `destination` over `route` (unless in search), whatever its state.
   void send_queued_over(NodeId destination, const RouteEntry& route);
+  // A buffered packet, control or data, over `route` (pass a copy, not a table entry: sending
+  // may change the table).
+  void transmit_queued(Packet packet, const RouteEntry& route);
 
   // Route discovery.
   void send_request(NodeId destination);
