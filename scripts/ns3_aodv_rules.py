@@ -14,7 +14,8 @@ sender before AODV reads it), and its RERRs (a broken link or a RERR reports rou
 state, and a broken link the neighbour itself; a RREP puts a new entry, without precursors, in
 the route's place), and its RREQ rate limit (every refused request waits on its own for the next
 window), and what a RREP for this node does to its discovery (it ends only a search it finds under
-way; the buffer leaves over the route as it stands). The ns-3 engine refuses AODV without them;
+way; the buffer leaves over the route as it stands), and when its routes age (every lookup ages
+the whole table). The ns-3 engine refuses AODV without them;
 the validation grid and the engine benchmark give them to SwarmNet's side so that both sides run
 the same protocol.
 """
@@ -35,6 +36,7 @@ NS3_AODV_RULES = {
     "rrep_replaces_route": True,
     "rate_limited_requests_stack": True,
     "rrep_ends_search_only": True,
+    "lookups_age_all_routes": True,
 }
 
 

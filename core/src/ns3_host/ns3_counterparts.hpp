@@ -151,7 +151,7 @@ struct Ns3FixedBehaviour {
   std::string_view behaviour;  // what ns-3 does, for the refusal
 };
 
-inline constexpr std::array<Ns3FixedBehaviour, 22> kNs3FixedBehaviour{{
+inline constexpr std::array<Ns3FixedBehaviour, 23> kNs3FixedBehaviour{{
     {"aodv", "increment_seqno_on_break", 0,
      "ns-3.37's AODV does not increment a broken route's destination sequence number"},
     {"aodv", "rreq_invalidates_sender_seqno", 1,
@@ -190,6 +190,8 @@ inline constexpr std::array<Ns3FixedBehaviour, 22> kNs3FixedBehaviour{{
     {"aodv", "rrep_ends_search_only", 1,
      "ns-3.37's AODV ends a discovery on a RREP only if the route was in search, and sends the "
      "buffer over the route whatever its state"},
+    {"aodv", "lookups_age_all_routes", 1,
+     "ns-3.37's AODV ages every route of its table at every route lookup"},
     {"aodv", "enable_local_repair", 0, "ns-3.37's AODV has no local repair"},
     {"aodv", "rrep_ack_required", 0,
      "ns-3.37's AODV requests a RREP-ACK only when an intermediate node answers"},

@@ -139,7 +139,9 @@ PluginInfo Aodv::info() {
       "(rrep_replaces_route); a RREP for this node ends its discovery and releases the buffer "
       "when it leaves the route valid, where ns-3 ends only a discovery whose route the RREP "
       "found in search and sends the buffer over the route whatever its state "
-      "(rrep_ends_search_only); a RREQ the rate limit refuses waits once per destination, where "
+      "(rrep_ends_search_only); a route ages when it is looked up, listed or at a periodic "
+      "purge, where ns-3 ages every route at every lookup (lookups_age_all_routes); a RREQ the "
+      "rate limit refuses waits once per destination, where "
       "ns-3 schedules every refused request on its own (rate_limited_requests_stack); a unicast "
       "message goes straight to its neighbour, where "
       "ns-3's IP takes the route to it (control_via_route_to_neighbor), and only AODV's own "
@@ -160,7 +162,8 @@ PluginInfo Aodv::info() {
 Aodv::Aodv(const PluginArgs& args)
     : params_(parameters_from(args.params)),
       random_(args.seed),
-      table_(params_.delete_period, params_.increment_seqno_on_break),
+      table_(params_.delete_period, params_.increment_seqno_on_break,
+             params_.lookups_age_all_routes ? RouteAging::whole_table : RouteAging::per_entry),
       queue_(params_.max_queue_len, params_.max_queue_time,
              [this](const Packet& packet, DropReason reason) { context_->drop(packet, reason); }),
       rreq_ids_(params_.path_discovery_time),
@@ -1187,11 +1190,18 @@ void Aodv::adopt_reported_seqno(RouteEntry& route, std::uint32_t seq) const {
   }
 }
 
-// Forgets expired routes, blacklist entries and RREQ ids (memory only: lookups age entries
-// themselves). Neighbours have their own timer (purge_neighbors).
+// Forgets expired blacklist entries and RREQ ids (memory only), and ages the route table: a
+// route's delete period starts here if no lookup of it came first. Neighbours have their own
+// timer (purge_neighbors). Under lookups_age_all_routes the routes are left to the lookups:
+// ns-3.37 has no timer of the table's own, and this one would start a delete period before
+// ns-3's first lookup after the route's expiry does.
 void Aodv::housekeeping() {
   const SimTime t = now();
-  table_.purge(t);
+  if (table_.aging() == RouteAging::whole_table) {
+    table_.forget_expired_blacklist(t);
+  } else {
+    table_.purge(t);
+  }
   rreq_ids_.purge(t);
   context_->schedule(params_.hello_interval, [this] { housekeeping(); });
 }

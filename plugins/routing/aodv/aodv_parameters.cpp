@@ -204,6 +204,17 @@ std::vector<ParamSpec> parameter_schema() {
                  "number with it, and the packets waiting for it dropped; false: a RREP that "
                  "leaves the route valid ends the discovery and sends the buffer over it (RFC "
                  "3561 6.7)"),
+      bool_param("lookups_age_all_routes", false,
+                 "true: ns-3.37's rule (RoutingTable::Purge, which LookupRoute, LookupValidRoute, "
+                 "AddRoute, DeleteRoute, GetListOfDestinationWithNextHop and "
+                 "InvalidateRoutesWithDst call): every route lookup first ages every route of "
+                 "the table, so an expired valid route becomes invalid, and starts its "
+                 "delete_period_s, at the node's first lookup after it expired, whatever "
+                 "destination that lookup is for, and an invalid route past its delete period is "
+                 "deleted then; the table has no timer of its own (a neighbour's expiry lists the "
+                 "routes through it, which ages them, as in ns-3); false: a route ages when it is "
+                 "looked up itself, every route when the routes through a neighbour are listed, "
+                 "and every hello_interval_s"),
       bool_param("enable_broadcast", true,
                  "rebroadcast application broadcasts (with duplicate detection and data_ttl)"),
       bool_param("enable_local_repair", false,
@@ -270,6 +281,7 @@ AodvParameters parameters_from(const ParamSet& params) {
   p.rrep_replaces_route = params.boolean("rrep_replaces_route");
   p.rate_limited_requests_stack = params.boolean("rate_limited_requests_stack");
   p.rrep_ends_search_only = params.boolean("rrep_ends_search_only");
+  p.lookups_age_all_routes = params.boolean("lookups_age_all_routes");
   p.enable_broadcast = params.boolean("enable_broadcast");
   p.enable_local_repair = params.boolean("enable_local_repair");
   p.local_add_ttl = count_param(params, "local_add_ttl");

@@ -56,6 +56,8 @@ struct AodvParameters {
   bool rate_limited_requests_stack = false;
   // ns-3.37's RecvReply: a RREP ends only a discovery whose route it found in search.
   bool rrep_ends_search_only = false;
+  // ns-3.37's route table (Purge): every lookup ages every route, not only the one looked up.
+  bool lookups_age_all_routes = false;
   bool enable_broadcast = true;
   bool enable_local_repair = false;
   std::uint32_t local_add_ttl = 2;

@@ -46,7 +46,16 @@ bool RoutingTable::age(RouteEntry& entry, SimTime now) const {
   return true;
 }
 
+void RoutingTable::age_all(SimTime now) {
+  if (now == aged_all_at_) return;
+  aged_all_at_ = now;
+  for (RouteEntry& entry : slots_) {
+    if (entry.destination != kNoNode && !age(entry, now)) remove(entry.destination);
+  }
+}
+
 RouteEntry* RoutingTable::find(NodeId destination, SimTime now) {
+  if (aging_ == RouteAging::whole_table) age_all(now);
   RouteEntry* entry = stored(destination);
   if (entry == nullptr) return nullptr;
   if (!age(*entry, now)) {
@@ -145,9 +154,11 @@ std::vector<UnreachableDestination> RoutingTable::list_via(NodeId next_hop, SimT
 }
 
 void RoutingTable::purge(SimTime now) {
-  for (RouteEntry& entry : slots_) {
-    if (entry.destination != kNoNode && !age(entry, now)) remove(entry.destination);
-  }
+  age_all(now);
+  forget_expired_blacklist(now);
+}
+
+void RoutingTable::forget_expired_blacklist(SimTime now) {
   std::erase_if(blacklist_, [now](const auto& item) { return item.second < now; });
 }
 

@@ -10,6 +10,11 @@
 // number, route inactive) lets the node accept a longer route with the same number through
 // upstream nodes that still route via it, a loop the random-mobility tests found. A table made
 // with `increment_seq_on_expiry` false keeps the number, as ns-3.37 does.
+//
+// When an expired route ages is the table's `RouteAging`: by default an entry ages when it is
+// looked up itself, when the routes through a neighbour are listed, and at purge(); ns-3.37's
+// table ages every entry at every lookup, so that an expired valid route becomes invalid, and
+// starts its delete_period, at the node's first lookup after it expired, for any destination.
 #pragma once
 
 #include <cstddef>
@@ -25,6 +30,11 @@
 namespace swarmnet::aodv {
 
 enum class RouteState : std::uint8_t { valid, invalid, in_search };
+
+enum class RouteAging : std::uint8_t {
+  per_entry,    // an entry ages when it is itself looked up; every entry at purge() and listings
+  whole_table,  // ns-3.37 (RoutingTable::Purge): every lookup first ages every entry
+};
 
 const char* to_string(RouteState state);
 
@@ -47,20 +57,26 @@ struct RouteEntry {
 
 class RoutingTable {
  public:
-  explicit RoutingTable(SimTime delete_period, bool increment_seq_on_expiry = true)
-      : delete_period_(delete_period), increment_seq_on_expiry_(increment_seq_on_expiry) {}
+  explicit RoutingTable(SimTime delete_period, bool increment_seq_on_expiry = true,
+                        RouteAging aging = RouteAging::per_entry)
+      : delete_period_(delete_period),
+        increment_seq_on_expiry_(increment_seq_on_expiry),
+        aging_(aging) {}
 
   // Bounds the destinations to the network's nodes 0..node_count-1 (the table is indexed by node
   // id: an unbounded id would size it to gigabytes). Until set, any id below kNoNode is taken.
   void set_node_count(std::size_t node_count) { node_count_ = node_count; }
 
-  // The entry for `destination` after expiry at `now`, or null.
+  // The entry for `destination` after expiry at `now`, or null. Under RouteAging::whole_table
+  // every entry ages first, as in ns-3.37's LookupRoute.
   RouteEntry* find(NodeId destination, SimTime now);
   // As find(), but only a valid route.
   RouteEntry* find_valid(NodeId destination, SimTime now);
 
   // Inserts `entry`, replacing any entry for the same destination; returns the stored entry.
   // A destination outside the network (or kNoNode, kBroadcast) throws std::logic_error.
+  // insert() and erase() age nothing: the plugin looks the destination up first, at the same
+  // instant, which has aged the table as ns-3.37's AddRoute and DeleteRoute do.
   RouteEntry& insert(RouteEntry entry);
   bool erase(NodeId destination);
 
@@ -77,8 +93,11 @@ class RoutingTable {
   // GetListOfDestinationWithNextHop).
   [[nodiscard]] std::vector<UnreachableDestination> destinations_via(NodeId next_hop, SimTime now);
 
-  // Applies expiry to every entry.
+  // Applies expiry to every entry, and forgets expired blacklist entries.
   void purge(SimTime now);
+  // Forgets expired blacklist entries only (is_blacklisted() ignores them anyway: memory).
+  void forget_expired_blacklist(SimTime now);
+  [[nodiscard]] RouteAging aging() const { return aging_; }
 
   // The blacklist (RFC 3561 section 6.8).
   void blacklist(NodeId neighbor, SimTime until) { blacklist_[neighbor] = until; }
@@ -92,6 +111,10 @@ class RoutingTable {
  private:
   // Applies expiry to one entry; returns false if the entry must be deleted.
   bool age(RouteEntry& entry, SimTime now) const;
+  // Applies expiry to every entry, once per instant: every entry the plugin writes at `now`
+  // that is not in search expires at `now` or later, so a second walk at the same instant
+  // would change nothing.
+  void age_all(SimTime now);
   // Routes through `next_hop` after expiry, valid ones only or all, sorted by destination.
   std::vector<UnreachableDestination> list_via(NodeId next_hop, SimTime now, bool valid_only);
 
@@ -108,6 +131,8 @@ class RoutingTable {
 
   SimTime delete_period_;
   bool increment_seq_on_expiry_;
+  RouteAging aging_;
+  SimTime aged_all_at_ = kTimeNever;  // the instant of the last age_all()
   // Looked up several times per packet: indexed by destination (node ids are dense), one array
   // read where a hash table took a division and a chain walk (5% of a 400-robot run). Entries
   // live in a deque, so the addresses find() hands out stay valid while others are inserted, as

@@ -35,6 +35,9 @@
 //   rrep_ends_search_only            RecvReply cancels the discovery timer only for a route the
 //                                    RREP found in search, and sends the buffer over the route
 //                                    whatever its state.
+// And when its routes age:
+//   lookups_age_all_routes           every route lookup ages the whole table (Purge); no timer
+//                                    ages it.
 // Why they matter: docs/validation.md, "The saturated rows, and ns-3's control-message rules".
 #include <gtest/gtest.h>
 
@@ -962,6 +965,79 @@ TEST_P(RrepEndsSearchOnly, AStaleRrepSendsTheBufferOverAnInvalidRouteOrKeepsItWa
 }
 
 INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, RrepEndsSearchOnly, ::testing::Bool(), reading_name);
+
+// ---- lookups_age_all_routes ---------------------------------------------------------------------
+
+// The reverse route to 7 (through neighbour 5) expires at 5.44 s, and nothing looks it up again;
+// HELLOs from 5 keep that link, and each is a lookup of the route to 5.
+class LookupsAgeAllRoutes : public BothReadings {
+ protected:
+  void expire_unused_route() {
+    make_with("lookups_age_all_routes", {{"increment_seqno_on_break", false}});
+    rreq(5, 7, 8, 1);
+    for (int second = 1; second <= 5; ++second) {
+      run(1.0);
+      hello_from(5, second);
+    }
+    run(0.5);
+    hello_from(5, 6);  // at 5.5 s, after the route to 7 expired
+  }
+};
+
+TEST_P(LookupsAgeAllRoutes, AnExpiredRoutesDeletePeriodStartsAtTheNextLookupOrAtTheNextPurge) {
+  expire_unused_route();
+  ASSERT_NE(route(7), nullptr);
+  if (GetParam()) {
+    // ns-3: the lookup of the route to 5 aged the route to 7 too.
+    EXPECT_EQ(route(7)->state, RouteState::invalid);
+    EXPECT_EQ(route(7)->expires, from_seconds(20.5));
+  } else {
+    EXPECT_EQ(route(7)->state, RouteState::valid);  // expired, not yet aged
+  }
+  run(1.0);  // past the housekeeping purge at 6 s
+  ASSERT_NE(route(7), nullptr);
+  EXPECT_EQ(route(7)->state, RouteState::invalid);
+  EXPECT_EQ(route(7)->expires, from_seconds(GetParam() ? 20.5 : 21.0));
+}
+
+TEST_P(LookupsAgeAllRoutes, NoTimerAgesTheTableUnderNs3sRule) {
+  make_with("lookups_age_all_routes", {{"increment_seqno_on_break", false}});
+  rreq(5, 7, 8, 1);  // the reverse route to 7 expires at 5.44 s
+  for (int second = 1; second <= 5; ++second) {
+    run(1.0);
+    hello_from(5, second);
+  }
+  run(1.5);  // to 6.5 s, past the housekeeping at 6 s, with no lookup since 5 s
+  ASSERT_NE(route(7), nullptr);
+  if (GetParam()) {
+    EXPECT_EQ(route(7)->state, RouteState::valid);  // expired, not yet aged
+  } else {
+    EXPECT_EQ(route(7)->state, RouteState::invalid);
+    EXPECT_EQ(route(7)->expires, from_seconds(21.0));
+  }
+  hello_from(5, 6);  // the first lookup after the expiry
+  EXPECT_EQ(route(7)->state, RouteState::invalid);
+  EXPECT_EQ(route(7)->expires, from_seconds(GetParam() ? 21.5 : 21.0));
+}
+
+TEST_P(LookupsAgeAllRoutes, AnInvalidRouteIsDeletedAtTheFirstLookupAfterItsDeletePeriod) {
+  expire_unused_route();
+  for (int second = 7; second <= 20; ++second) {  // 6.5 s to 19.5 s
+    run(1.0);
+    hello_from(5, second);
+  }
+  run(1.25);
+  hello_from(5, 21);  // at 20.75 s: past ns-3's 20.5 s, before the purge's 21 s
+  if (GetParam()) {
+    EXPECT_EQ(route(7), nullptr);
+  } else {
+    ASSERT_NE(route(7), nullptr);
+    EXPECT_EQ(route(7)->state, RouteState::invalid);
+  }
+  EXPECT_TRUE(route(5)->is_valid());
+}
+
+INSTANTIATE_TEST_SUITE_P(Ns3AndRfc, LookupsAgeAllRoutes, ::testing::Bool(), reading_name);
 
 }  // namespace
 }  // namespace swarmnet::aodv

@@ -63,6 +63,31 @@ TEST(AodvRoutingTable, ValidRouteExpiresToInvalidThenIsDeleted) {
   EXPECT_EQ(ns3_rule.find(7, s(3.5))->seq, 10U);
 }
 
+TEST(AodvRoutingTable, WholeTableAgingAgesEveryRouteAtAnyLookup) {
+  // ns-3.37: a lookup for 8 at 3.5 s ages the route to 7 too; its delete period starts then.
+  RoutingTable ns3_rule(s(15), false, RouteAging::whole_table);
+  ns3_rule.insert(route(7, 3, 2, 10, s(3)));
+  ns3_rule.insert(route(8, 3, 2, 10, s(100)));
+  ASSERT_NE(ns3_rule.find(8, s(3.5)), nullptr);
+  ASSERT_NE(ns3_rule.entry(7), nullptr);
+  EXPECT_EQ(ns3_rule.entry(7)->state, RouteState::invalid);
+  EXPECT_EQ(ns3_rule.entry(7)->expires, s(18.5));
+  EXPECT_EQ(ns3_rule.entry(7)->seq, 10U);
+  ASSERT_NE(ns3_rule.find(8, s(18.6)), nullptr);
+  EXPECT_EQ(ns3_rule.entry(7), nullptr);  // deleted at the first lookup after 18.5 s
+  EXPECT_EQ(ns3_rule.size(), 1U);
+
+  // By entry: the route to 7 ages only when it is itself looked up (or at a purge).
+  RoutingTable per_entry(s(15), false);
+  per_entry.insert(route(7, 3, 2, 10, s(3)));
+  per_entry.insert(route(8, 3, 2, 10, s(100)));
+  ASSERT_NE(per_entry.find(8, s(3.5)), nullptr);
+  EXPECT_EQ(per_entry.entry(7)->state, RouteState::valid);
+  EXPECT_EQ(per_entry.find(7, s(4))->expires, s(19));
+  ASSERT_NE(per_entry.find(8, s(18.6)), nullptr);
+  EXPECT_NE(per_entry.entry(7), nullptr);
+}
+
 TEST(AodvRoutingTable, RouteInSearchDoesNotExpireByItself) {
   RoutingTable table(s(15));
   RouteEntry e = route(7, kNoNode, 1, 0, s(1));
@@ -116,9 +141,10 @@ TEST(AodvRoutingTable, AnEntrysAddressSurvivesOtherInsertsAndRemovals) {
   EXPECT_EQ(table.entry(5999)->seq, 5999U);
 }
 
-TEST(AodvRoutingTable, MatchesAMapOfRoutesUnderRandomInsertsFindsAndPurges) {
-  // A std::map with the same expiry rules as the reference: every lookup and size agree.
-  RoutingTable table(s(2));
+// A std::map with the same expiry rules as the reference: every lookup and size agree, for
+// either aging (by entry, or the whole table at every lookup).
+void check_against_a_map_of_routes(RouteAging aging) {
+  RoutingTable table(s(2), true, aging);
   std::map<NodeId, RouteEntry> model;
   RandomStream random(42);
   const auto age = [](RouteEntry& e, SimTime now) {  // RoutingTable::age, restated
@@ -132,8 +158,15 @@ TEST(AodvRoutingTable, MatchesAMapOfRoutesUnderRandomInsertsFindsAndPurges) {
     }
     return e.state != RouteState::invalid;
   };
+  const auto age_model = [&model, &age](SimTime now) {
+    for (auto it = model.begin(); it != model.end();) {
+      it = age(it->second, now) ? std::next(it) : model.erase(it);
+    }
+  };
   for (int step = 0; step < 20000; ++step) {
-    const SimTime now = s(step * 0.001);
+    // Two steps an instant, so that a lookup may follow another at the same time.
+    const int instant = step / 2;
+    const SimTime now = s(instant * 0.002);
     const auto d = static_cast<NodeId>(random.below(300));
     switch (random.below(4)) {
       case 0: {
@@ -145,6 +178,7 @@ TEST(AodvRoutingTable, MatchesAMapOfRoutesUnderRandomInsertsFindsAndPurges) {
       }
       case 1: {
         const RouteEntry* found = table.find(d, now);
+        if (aging == RouteAging::whole_table) age_model(now);
         const auto it = model.find(d);
         if (it != model.end() && !age(it->second, now)) model.erase(it);
         const auto again = model.find(d);
@@ -160,13 +194,19 @@ TEST(AodvRoutingTable, MatchesAMapOfRoutesUnderRandomInsertsFindsAndPurges) {
         break;
       default:
         table.purge(now);
-        for (auto it = model.begin(); it != model.end();) {
-          it = age(it->second, now) ? std::next(it) : model.erase(it);
-        }
+        age_model(now);
         break;
     }
     ASSERT_EQ(table.size(), model.size()) << step;
   }
+}
+
+TEST(AodvRoutingTable, MatchesAMapOfRoutesUnderRandomInsertsFindsAndPurges) {
+  check_against_a_map_of_routes(RouteAging::per_entry);
+}
+
+TEST(AodvRoutingTable, MatchesAMapOfRoutesAgedWholeAtEveryLookup) {
+  check_against_a_map_of_routes(RouteAging::whole_table);
 }
 
 TEST(AodvRoutingTable, ARouteToNoNodeIsRefused) {
