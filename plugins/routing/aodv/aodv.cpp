@@ -781,6 +781,7 @@ void Aodv::receive_reply(Rrep rrep, NodeId from) {
     if (to_destination == nullptr) {
       RouteEntry entry;
       entry.destination = rrep.destination;
+      entry.expires = t + from_ms(rrep.lifetime_ms);  // never stored already expired
       to_destination = &table_.insert(std::move(entry));
     }
     to_destination->next_hop = from;
@@ -1190,18 +1191,12 @@ void Aodv::adopt_reported_seqno(RouteEntry& route, std::uint32_t seq) const {
   }
 }
 
-// Forgets expired blacklist entries and RREQ ids (memory only), and ages the route table: a
-// route's delete period starts here if no lookup of it came first. Neighbours have their own
-// timer (purge_neighbors). Under lookups_age_all_routes the routes are left to the lookups:
-// ns-3.37 has no timer of the table's own, and this one would start a delete period before
-// ns-3's first lookup after the route's expiry does.
+// Forgets expired RREQ ids (memory only) and lets the route table keep itself
+// (RoutingTable::housekeep: its blacklist, and its routes unless lookups age them). Neighbours
+// have their own timer (purge_neighbors).
 void Aodv::housekeeping() {
   const SimTime t = now();
-  if (table_.aging() == RouteAging::whole_table) {
-    table_.forget_expired_blacklist(t);
-  } else {
-    table_.purge(t);
-  }
+  table_.housekeep(t);
   rreq_ids_.purge(t);
   context_->schedule(params_.hello_interval, [this] { housekeeping(); });
 }

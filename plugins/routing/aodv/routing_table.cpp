@@ -158,6 +158,14 @@ void RoutingTable::purge(SimTime now) {
   forget_expired_blacklist(now);
 }
 
+void RoutingTable::housekeep(SimTime now) {
+  if (aging_ == RouteAging::whole_table) {
+    forget_expired_blacklist(now);
+  } else {
+    purge(now);
+  }
+}
+
 void RoutingTable::forget_expired_blacklist(SimTime now) {
   std::erase_if(blacklist_, [now](const auto& item) { return item.second < now; });
 }

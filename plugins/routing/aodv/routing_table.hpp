@@ -95,9 +95,11 @@ class RoutingTable {
 
   // Applies expiry to every entry, and forgets expired blacklist entries.
   void purge(SimTime now);
-  // Forgets expired blacklist entries only (is_blacklisted() ignores them anyway: memory).
-  void forget_expired_blacklist(SimTime now);
-  [[nodiscard]] RouteAging aging() const { return aging_; }
+  // The plugin's periodic call: forgets expired blacklist entries and, under per_entry aging,
+  // ages every entry (a route's delete period starts here if no lookup of it came first). Under
+  // whole_table the entries are left to the lookups: ns-3.37's table has no timer of its own,
+  // and one would start a delete period before ns-3's first lookup after the expiry does.
+  void housekeep(SimTime now);
 
   // The blacklist (RFC 3561 section 6.8).
   void blacklist(NodeId neighbor, SimTime until) { blacklist_[neighbor] = until; }
@@ -115,6 +117,8 @@ class RoutingTable {
   // that is not in search expires at `now` or later, so a second walk at the same instant
   // would change nothing.
   void age_all(SimTime now);
+  // Forgets expired blacklist entries only (is_blacklisted() ignores them anyway: memory).
+  void forget_expired_blacklist(SimTime now);
   // Routes through `next_hop` after expiry, valid ones only or all, sorted by destination.
   std::vector<UnreachableDestination> list_via(NodeId next_hop, SimTime now, bool valid_only);
 

@@ -88,6 +88,24 @@ TEST(AodvRoutingTable, WholeTableAgingAgesEveryRouteAtAnyLookup) {
   EXPECT_NE(per_entry.entry(7), nullptr);
 }
 
+TEST(AodvRoutingTable, HousekeepingAgesRoutesOnlyWhenLookupsDoNot) {
+  // By entry, the periodic call starts an expired route's delete period.
+  RoutingTable per_entry(s(15), false);
+  per_entry.insert(route(7, 3, 2, 10, s(3)));
+  per_entry.housekeep(s(4));
+  ASSERT_NE(per_entry.entry(7), nullptr);
+  EXPECT_EQ(per_entry.entry(7)->state, RouteState::invalid);
+  EXPECT_EQ(per_entry.entry(7)->expires, s(19));
+
+  // ns-3.37 has no timer of the table's own: the route waits for the next lookup.
+  RoutingTable ns3_rule(s(15), false, RouteAging::whole_table);
+  ns3_rule.insert(route(7, 3, 2, 10, s(3)));
+  ns3_rule.housekeep(s(4));
+  ASSERT_NE(ns3_rule.entry(7), nullptr);
+  EXPECT_EQ(ns3_rule.entry(7)->state, RouteState::valid);
+  EXPECT_EQ(ns3_rule.find(7, s(5))->expires, s(20));
+}
+
 TEST(AodvRoutingTable, RouteInSearchDoesNotExpireByItself) {
   RoutingTable table(s(15));
   RouteEntry e = route(7, kNoNode, 1, 0, s(1));
