@@ -19,12 +19,24 @@ A lost attempt between nodes within the nominal range (--range-m) is put down to
 trace shows on the air during it, the first that applies: the receiver itself transmitting; a
 frame from within range of the receiver that started before it (the receiver may have been
 locked on that one: no capture); one that started during it (a collision); only frames from
-farther away (interference alone); nothing at all.
+farther away (interference alone); nothing at all. For the receiver's own frame, and otherwise
+the first to start of the frames near the receiver, it also tells whom (the receiver's ACK or
+another frame of the receiver; a node in range of the sender, which the sender could sense, or
+one hidden from it) and when that frame started against the attempt: more than 4 us before,
+within 4 us (two stations that sense each other chose the same slot), or more than 4 us after.
+Between stations in range of each other, before or after means that one of them transmitted
+into a frame it could sense.
 
 An MPDU is a node's first transmission of a frame (Retry bit clear) with the retransmissions that
 follow it (Retry bit set, same receiver and sequence number): one in flight per node, as in
 802.11's DCF. Its fate: acknowledged at its first attempt, at a later one, or never (given up at
 the retry limit, --retry-limit attempts; or fewer, when it expired in the queue or the run ended).
+One given up at the limit is put down to its receiver being beyond range at its first attempt,
+or else to what lost most of its attempts (the groups above, only far frames, nothing; the first
+on a tie): the persistent losses that a MAC reports to routing as broken links. Those whose
+receiver was beyond range are also counted by payload (messages, control packets, ARP): a
+source that keeps sending messages to a next hop that has moved away holds a route that its
+routing protocol does not see break.
 
 --from-s and --to-s keep only the frames that start in that window of simulated time (ACKs a
 little beyond its end too, so that its last frames can be acknowledged; an MPDU whose first
@@ -32,7 +44,10 @@ attempt lies before the window is counted as begun_before_trace, with no fate), 
 two sides before
 their runs part ways.
 
-Prints, per side and pooled over the pairs: frames by kind; the share of unicast attempts
+Prints, per side and pooled over the pairs: frames by kind, and first transmissions by what
+they carry (broadcast or unicast, a message or a control packet, and the frame's size, which
+tells a routing protocol's messages apart: with AODV over ns-3's default stack a RREQ is an 88 B
+broadcast, a HELLO an 84 B one, a RREP an 84 B unicast); the share of unicast attempts
 acknowledged, first attempts and retransmissions apart, and per distance band; the MPDUs' fates;
 and writes the same as JSON (--out). Python standard library only."""
 import argparse
@@ -51,6 +66,12 @@ RANGE_M = 120.0  # the grid's nominal range: received power at the -82 dBm detec
 # What else was on the air when an attempt within range was lost, most telling first.
 LOSS_CAUSES = ("receiver_transmitting", "earlier_frame_near_receiver",
                "later_frame_near_receiver", "only_far_frames", "nothing_else_on_air")
+# When the frame behind a loss (the receiver's own, or the first to start of those near the
+# receiver) started, against the lost attempt: two stations that sense each other and start
+# within 4 us (ns-3's preamble-detection window) chose the same slot; one that starts later than
+# that transmitted into a frame it could sense.
+SAME_SLOT_US = 4.0
+OVERLAP_STARTS = ("before", "within_4_us", "after")
 
 SETDEST = re.compile(r'\$ns_ at ([0-9.eE+-]+) "\$node_\((\d+)\) setdest ([0-9.eE+-]+) '
                      r'([0-9.eE+-]+) ([0-9.eE+-]+)"')
@@ -148,31 +169,65 @@ def band_of(distance_m):
     return f">={DISTANCE_BANDS_M[-1]} m"
 
 
+def frame_class(frame):
+    """What a frame carries, to tell a routing protocol's messages apart by their size: "ack",
+    "arp request", "arp reply", or "broadcast|unicast message|control N B" for a data frame."""
+    kind, receiver, frame_bytes, message = frame[2], frame[4], frame[5], frame[7]
+    if kind == "arp":
+        return "arp request" if receiver < 0 else "arp reply"
+    if kind != "data":
+        return kind
+    return (f"{'broadcast' if receiver < 0 else 'unicast'} "
+            f"{'message' if message >= 0 else 'control'} {frame_bytes} B")
+
+
+def overlap_start(other_start_ns, start_ns):
+    """OVERLAP_STARTS: when a frame started, against an attempt that started at start_ns."""
+    offset_us = (other_start_ns - start_ns) / 1000.0
+    if offset_us < -SAME_SLOT_US:
+        return OVERLAP_STARTS[0]
+    return OVERLAP_STARTS[1] if offset_us <= SAME_SLOT_US else OVERLAP_STARTS[2]
+
+
 def analyse(frames, mobility, rate_mbps, slack_us, retry_limit, range_m=RANGE_M):
     """Counts for one trace (see the module's docstring)."""
     kinds = collections.Counter(frame[2] for frame in frames)
+    classes = collections.Counter(frame_class(frame) for frame in frames if not frame[3])
     frames = sorted(frames, key=lambda f: f[0])  # by start: both traces are, stably
     starts = [f[0] for f in frames]
     ends = [f[0] + airtime_us(f[5], rate_mbps) * 1000.0 for f in frames]
     longest_ns = max((e - t for e, t in zip(ends, starts)), default=0.0)
 
     def loss_cause(i, receiver):
-        """What else was on the air during frame i (LOSS_CAUSES)."""
+        """What else was on the air during frame i (LOSS_CAUSES), and for a frame from the
+        receiver or near it, which group of loss_overlaps it counts in and when it started."""
         t, end = starts[i], ends[i]
+        sender = frames[i][1]
         j = bisect.bisect_left(starts, t - longest_ns)
         causes = set()
+        first_near = None
         while j < len(frames) and starts[j] < end:
             other = frames[j]
-            if j != i and ends[j] > t and other[1] != frames[i][1]:
+            if j != i and ends[j] > t and other[1] != sender:
                 if other[1] == receiver:
-                    return LOSS_CAUSES[0]
+                    group = "receiver_ack" if other[2] == "ack" else "receiver_other"
+                    return LOSS_CAUSES[0], (group, overlap_start(starts[j], t))
                 near = mobility.distance(other[1], receiver, t / 1e9) < range_m
                 if near:
                     causes.add(1 if starts[j] <= t else 2)
+                    if first_near is None:  # frames are by start: the first is the earliest
+                        first_near = j
                 else:
                     causes.add(3)
             j += 1
-        return LOSS_CAUSES[min(causes)] if causes else LOSS_CAUSES[4]
+        if not causes:
+            return LOSS_CAUSES[4], None
+        if first_near is None:
+            return LOSS_CAUSES[3], None
+        sensed = mobility.distance(frames[first_near][1], sender, t / 1e9) < range_m
+        return LOSS_CAUSES[min(causes)], ("near_sensed_by_sender" if sensed else
+                                          "near_hidden_from_sender",
+                                          overlap_start(starts[first_near], t))
 
     acks = collections.defaultdict(list)  # (from, to) -> ACK start times, ns
     for t, node, kind, _, receiver, *_ in frames:
@@ -189,17 +244,23 @@ def analyse(frames, mobility, rate_mbps, slack_us, retry_limit, range_m=RANGE_M)
 
     attempts = collections.Counter()  # (first|retry, acked) -> count
     bands = collections.defaultdict(collections.Counter)  # band -> {attempts, acked, first, ...}
-    # node -> the MPDU in flight: [receiver, sequence, attempts, acked_at (0: not), payload, whole]
+    # node -> the MPDU in flight: [receiver, sequence, attempts, acked_at (0: not), payload, whole,
+    # its receiver beyond range at the first attempt, its lost attempts by what lost them]
     mpdus = {}
     fates = collections.Counter()
     given_up_by_payload = collections.Counter()  # messages, control packets or ARP, at the limit
     given_up_by_attempts = collections.Counter()
+    given_up_by_loss = collections.Counter()
+    given_up_beyond_range = collections.Counter()  # by payload: a next hop that had moved away
     lost = collections.defaultdict(collections.Counter)  # band -> cause -> lost attempts
+    # group -> start -> attempts within range under such a frame, and those of them lost
+    overlapped = collections.defaultdict(collections.Counter)
+    overlaps = collections.defaultdict(collections.Counter)
 
     def close(mpdu):
         if mpdu is None:
             return
-        _, _, count, acked_at, payload, whole = mpdu
+        _, _, count, acked_at, payload, whole, beyond_range, losses = mpdu
         if not whole:
             fates["begun_before_trace"] += 1  # its first attempt is not in the trace: no fate
             return
@@ -212,6 +273,11 @@ def analyse(frames, mobility, rate_mbps, slack_us, retry_limit, range_m=RANGE_M)
             fates["given_up_at_limit" if count >= retry_limit else "never_acked_fewer"] += 1
             if count >= retry_limit:
                 given_up_by_payload[payload] += 1
+                # where the receiver was, else what lost most of its attempts (the first on a tie)
+                given_up_by_loss["receiver_beyond_range" if beyond_range else
+                                 losses.most_common(1)[0][0]] += 1
+                if beyond_range:
+                    given_up_beyond_range[payload] += 1
             given_up_by_attempts[count] += 1
 
     for i, (t, node, kind, retry, receiver, frame_bytes, sequence, message) in enumerate(frames):
@@ -219,8 +285,16 @@ def analyse(frames, mobility, rate_mbps, slack_us, retry_limit, range_m=RANGE_M)
             continue
         acked = acknowledged(t, node, receiver, frame_bytes)
         distance = mobility.distance(node, receiver, t / 1e9)
-        if not acked and distance < range_m:
-            lost[band_of(distance)][loss_cause(i, receiver)] += 1
+        loss = "beyond_range"
+        if distance < range_m:
+            cause, overlap = loss_cause(i, receiver)
+            loss = cause if overlap is None else overlap[0]
+            if overlap is not None:
+                overlapped[overlap[0]][overlap[1]] += 1
+            if not acked:
+                lost[band_of(distance)][cause] += 1
+                if overlap is not None:
+                    overlaps[overlap[0]][overlap[1]] += 1
         band = bands[band_of(distance)]
         band["attempts"] += 1
         band["acked"] += acked
@@ -233,14 +307,18 @@ def analyse(frames, mobility, rate_mbps, slack_us, retry_limit, range_m=RANGE_M)
         else:
             close(mpdu)
             payload = "arp" if kind == "arp" else "message" if message >= 0 else "control"
-            mpdu = mpdus[node] = [receiver, sequence, 1, 0, payload, not retry]
+            mpdu = mpdus[node] = [receiver, sequence, 1, 0, payload, not retry,
+                                  distance >= range_m, collections.Counter()]
         if acked and not mpdu[3]:
             mpdu[3] = mpdu[2]
+        if not acked:
+            mpdu[7][loss] += 1
     for mpdu in mpdus.values():
         close(mpdu)
     fates["mpdus"] = sum(fates[k] for k in ("acked_first", "acked_later", "never_acked"))
     return {
         "frames": dict(sorted(kinds.items())),
+        "first_transmissions": dict(sorted(classes.items())),
         "unicast_attempts": sum(attempts.values()),
         "first_attempts": attempts[("first", True)] + attempts[("first", False)],
         "first_acked": attempts[("first", True)],
@@ -250,7 +328,13 @@ def analyse(frames, mobility, rate_mbps, slack_us, retry_limit, range_m=RANGE_M)
         "mpdus": dict(fates),
         "never_acked_by_attempts": {str(k): v for k, v in sorted(given_up_by_attempts.items())},
         "given_up_at_limit_by_payload": dict(sorted(given_up_by_payload.items())),
+        "given_up_at_limit_by_loss": dict(sorted(given_up_by_loss.items())),
+        "given_up_at_limit_beyond_range_by_payload": dict(sorted(given_up_beyond_range.items())),
         "lost_in_range_by_cause": {band: dict(causes) for band, causes in lost.items()},
+        "lost_in_range_by_overlap": {group: dict(starts) for group, starts in
+                                     sorted(overlaps.items())},
+        "in_range_by_overlap": {group: dict(starts) for group, starts in
+                                sorted(overlapped.items())},
     }
 
 
@@ -272,11 +356,31 @@ def band_order(band):
         DISTANCE_BANDS_M)
 
 
+OVERLAP_LABELS = {
+    "receiver_ack": "the receiver sent (an ACK)",
+    "receiver_other": "the receiver sent (not an ACK)",
+    "near_sensed_by_sender": "near the receiver, in range of the sender",
+    "near_hidden_from_sender": "near the receiver, hidden from the sender",
+}
+
+
+GIVEN_UP_LABELS = {
+    "receiver_beyond_range": "receiver beyond range at the first attempt",
+    **{group: f"most attempts lost to a frame {label}" for group, label in OVERLAP_LABELS.items()},
+    "only_far_frames": "most attempts lost under only far frames",
+    "nothing_else_on_air": "most attempts lost with nothing else on the air",
+    "beyond_range": "most attempts made beyond range",
+}
+
+
 def table(swarmnet, ns3):
     lines = ["| measure | SwarmNet | ns-3 |", "|---|---|---|"]
     for kind in sorted(set(swarmnet["frames"]) | set(ns3["frames"])):
         lines.append(f"| {kind} frames | {swarmnet['frames'].get(kind, 0):,} | "
                      f"{ns3['frames'].get(kind, 0):,} |")
+    sc, nc = swarmnet["first_transmissions"], ns3["first_transmissions"]
+    for name in sorted(set(sc) | set(nc)):
+        lines.append(f"| first transmissions: {name} | {sc.get(name, 0):,} | {nc.get(name, 0):,} |")
 
     def row(name, key, of):
         lines.append(f"| {name} | {share(swarmnet[key], swarmnet[of])} of {swarmnet[of]:,} | "
@@ -304,12 +408,31 @@ def table(swarmnet, ns3):
     for payload in sorted(set(sg) | set(ng)):
         lines.append(f"| given up at the limit, {payload} | {sg.get(payload, 0):,} | "
                      f"{ng.get(payload, 0):,} |")
+    sg, ng = swarmnet["given_up_at_limit_by_loss"], ns3["given_up_at_limit_by_loss"]
+    for loss in sorted(set(sg) | set(ng)):
+        lines.append(f"| given up at the limit: {GIVEN_UP_LABELS[loss]} | {sg.get(loss, 0):,} | "
+                     f"{ng.get(loss, 0):,} |")
+    sb = swarmnet["given_up_at_limit_beyond_range_by_payload"]
+    nb = ns3["given_up_at_limit_beyond_range_by_payload"]
+    for payload in sorted(set(sb) | set(nb)):
+        lines.append(f"| given up at the limit, receiver beyond range: {payload} | "
+                     f"{sb.get(payload, 0):,} | {nb.get(payload, 0):,} |")
     sl, nl = swarmnet["lost_in_range_by_cause"], ns3["lost_in_range_by_cause"]
     for band in sorted(set(sl) | set(nl), key=band_order):
         for cause in LOSS_CAUSES:
             s_n, n_n = sl.get(band, {}).get(cause, 0), nl.get(band, {}).get(cause, 0)
             if s_n or n_n:
                 lines.append(f"| lost {band}: {cause.replace('_', ' ')} | {s_n:,} | {n_n:,} |")
+    sa, na = swarmnet["in_range_by_overlap"], ns3["in_range_by_overlap"]
+    so, no = swarmnet["lost_in_range_by_overlap"], ns3["lost_in_range_by_overlap"]
+    for group in sorted(set(sa) | set(na)):
+        for start in OVERLAP_STARTS:
+            s_a, n_a = sa.get(group, {}).get(start, 0), na.get(group, {}).get(start, 0)
+            s_n, n_n = so.get(group, {}).get(start, 0), no.get(group, {}).get(start, 0)
+            if s_a or n_a:
+                lines.append(f"| attempts under a frame {OVERLAP_LABELS[group]}, started "
+                             f"{start.replace('_', ' ')}: lost of all | {s_n:,} of {s_a:,} | "
+                             f"{n_n:,} of {n_a:,} |")
     return "\n".join(lines)
 
 

@@ -2,7 +2,8 @@
 """frame_agreement.py on traces written here: ACKs matched SIFS after a frame's airtime, an MPDU's
 attempts grouped and its fate told (first attempt, later, never: at the retry limit), a lost ACK
 seen as a retransmission after it, distances from ns-2 moves, a lost attempt put down to what
-else was on the air, and a malformed trace refused by name."""
+else was on the air (and to whom, and when it started), and a malformed trace refused by
+name."""
 import json
 import os
 import subprocess
@@ -17,7 +18,10 @@ MOBILITY = ("$node_(0) set X_ 0\n$node_(0) set Y_ 0\n$node_(0) set Z_ 0\n"
             "$node_(1) set X_ 50\n$node_(1) set Y_ 0\n$node_(1) set Z_ 0\n"
             "$node_(2) set X_ 0\n$node_(2) set Y_ 115\n$node_(2) set Z_ 0\n"
             # node 2 moves away from 115 m to 130 m between t = 1 s and t = 2 s
-            '$ns_ at 1.0 "$node_(2) setdest 0 130 15"\n')
+            '$ns_ at 1.0 "$node_(2) setdest 0 130 15"\n'
+            # node 3 is in range of nodes 0 and 1; node 4 of node 1 only (110 m; 160 m from 0)
+            "$node_(3) set X_ 25\n$node_(3) set Y_ 30\n$node_(3) set Z_ 0\n"
+            "$node_(4) set X_ 160\n$node_(4) set Y_ 0\n$node_(4) set Z_ 0\n")
 
 
 def data(t, node, receiver, sequence, retry=0, message=1):
@@ -46,6 +50,18 @@ def frames(ack_lost):
     text += data(4_000_000_000, 0, 1, 7) + ack(4_000_000_000 + ACK_AFTER_NS + 20_000, 1, 0)
     # lost while its receiver transmits a broadcast of its own, 10 us after the frame began
     text += data(5_000_000_000, 0, 1, 8) + "5000010000,1,data,0,-1,164,3,-1\n"
+    # lost to node 3, which node 0 senses, starting 2 us later: the same slot
+    text += data(6_000_000_000, 0, 1, 9) + "6000002000,3,data,0,-1,164,1,-1\n"
+    # lost to node 4, hidden from node 0, on the air since 100 us before
+    text += "6999900000,4,data,0,-1,164,1,-1\n" + data(7_000_000_000, 0, 1, 10)
+    # received (acknowledged) under the same frame of node 4
+    text += "7999900000,4,data,0,-1,164,2,-1\n" + data(8_000_000_000, 0, 1, 11)
+    text += ack(8_000_000_000 + ACK_AFTER_NS, 1, 0)
+    # given up at the limit, every attempt under a frame of node 4 begun 100 us before it
+    for attempt in range(7):
+        t = 9_000_000_000 + attempt * 1_000_000
+        text += f"{t - 100_000},4,data,0,-1,164,{3 + attempt},-1\n"
+        text += data(t, 0, 1, 12, retry=min(attempt, 1))
     return text
 
 
@@ -75,27 +91,49 @@ def main():
         def expect(what, got, want):
             if got != want:
                 problems.append(f"{what}: {got}, expected {want}")
-        expect("SwarmNet MPDUs", s["mpdus"], {"acked_first": 1, "acked_later": 1,
-                                              "never_acked": 3, "given_up_at_limit": 1,
-                                              "never_acked_fewer": 2, "mpdus": 5})
-        expect("ns-3 MPDUs", n["mpdus"], {"acked_first": 1, "acked_later": 1,
-                                          "never_acked": 3, "given_up_at_limit": 1,
-                                          "never_acked_fewer": 2, "sent_again_after_ack": 1,
-                                          "mpdus": 5})
-        expect("given up, by payload", s["given_up_at_limit_by_payload"], {"message": 1})
+        expect("SwarmNet MPDUs", s["mpdus"], {"acked_first": 2, "acked_later": 1,
+                                              "never_acked": 6, "given_up_at_limit": 2,
+                                              "never_acked_fewer": 4, "mpdus": 9})
+        expect("ns-3 MPDUs", n["mpdus"], {"acked_first": 2, "acked_later": 1,
+                                          "never_acked": 6, "given_up_at_limit": 2,
+                                          "never_acked_fewer": 4, "sent_again_after_ack": 1,
+                                          "mpdus": 9})
+        expect("given up, by payload", s["given_up_at_limit_by_payload"], {"message": 2})
+        # node 2 had moved beyond range; node 1's attempts were all lost to hidden node 4
+        expect("given up, by loss", s["given_up_at_limit_by_loss"],
+               {"receiver_beyond_range": 1, "near_hidden_from_sender": 1})
+        expect("given up beyond range, by payload",
+               s["given_up_at_limit_beyond_range_by_payload"], {"message": 1})
         # within range, lost: 1 -> 0 and 0 -> 1 with nothing else on the air, 0 -> 1 while 1
-        # transmits; the seven attempts to node 2, 130 m away, are out of range
+        # transmits, and 0 -> 1 twice under a frame near 1; the seven attempts to node 2, 130 m
+        # away, are out of range
         expect("lost by cause", s["lost_in_range_by_cause"],
-               {"<60 m": {"nothing_else_on_air": 2, "receiver_transmitting": 1}})
-        expect("SwarmNet first attempts", (s["first_attempts"], s["first_acked"]), (5, 1))
-        expect("SwarmNet retries", (s["retries"], s["retries_acked"]), (7, 1))
-        expect("ns-3 retries", (n["retries"], n["retries_acked"]), (8, 2))
-        expect("never acknowledged by attempts", s["never_acked_by_attempts"], {"1": 2, "7": 1})
+               {"<60 m": {"nothing_else_on_air": 2, "receiver_transmitting": 1,
+                          "later_frame_near_receiver": 1, "earlier_frame_near_receiver": 8}})
+        expect("lost by overlap", s["lost_in_range_by_overlap"],
+               {"near_hidden_from_sender": {"before": 8},
+                "near_sensed_by_sender": {"within_4_us": 1}, "receiver_other": {"after": 1}})
+        # every attempt within range under such a frame, lost or not: one more under node 4's
+        expect("in range by overlap", s["in_range_by_overlap"],
+               {"near_hidden_from_sender": {"before": 9},
+                "near_sensed_by_sender": {"within_4_us": 1}, "receiver_other": {"after": 1}})
+        expect("SwarmNet first attempts", (s["first_attempts"], s["first_acked"]), (9, 2))
+        expect("SwarmNet retries", (s["retries"], s["retries_acked"]), (13, 1))
+        expect("ns-3 retries", (n["retries"], n["retries_acked"]), (14, 2))
+        expect("never acknowledged by attempts", s["never_acked_by_attempts"], {"1": 4, "7": 2})
         expect("bands", sorted(s["bands"]), ["<60 m", ">=120 m"])
         expect("beyond 120 m", s["bands"][">=120 m"].get("attempts"), 7)
-        expect("frames by kind", s["frames"], {"ack": 3, "data": 14})
-        if "| first attempts acknowledged | 20.0% of 5 | 20.0% of 5 |" not in result.stdout:
+        expect("frames by kind", s["frames"], {"ack": 4, "data": 34})
+        # first transmissions by what they carry (the Retry bit clear): the broadcasts of nodes
+        # 1, 3 and 4 are control packets of 164 B; every unicast carries a message
+        expect("first transmissions", s["first_transmissions"],
+               {"ack": 4, "broadcast control 164 B": 11, "broadcast message 164 B": 1,
+                "unicast message 164 B": 9})
+        if "| first attempts acknowledged | 22.2% of 9 | 22.2% of 9 |" not in result.stdout:
             problems.append("table: no first-attempt row:\n" + result.stdout)
+        if ("| attempts under a frame near the receiver, hidden from the sender, started before: "
+                "lost of all | 8 of 9 | 8 of 9 |") not in result.stdout:
+            problems.append("table: no row of attempts under a frame:\n" + result.stdout)
         # A window of simulated time keeps only the frames that start in it: [3 s, 4.5 s) holds
         # node 1's MPDU (acknowledged at its second attempt), the broadcast and node 0's MPDU
         # whose ACK came too late.
