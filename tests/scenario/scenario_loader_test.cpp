@@ -319,6 +319,32 @@ TEST(ScenarioLoader, PluginPathsAreRelativeToTheScenarioFile) {
   }
 }
 
+// A server reads a peer's scenario with its own plugin search path: the text's plugin_paths,
+// however spelt, is neither looked up (no "is not a directory" about the server's folders) nor
+// searched; given twice, it is refused at the second.
+TEST(ScenarioLoader, APeersScenarioKeepsTheServersPluginPathsWhateverItSays) {
+  const std::string text = test::read_text(kMinimal);
+  const std::vector<fs::path> host = {test::kFixtures};
+  for (const std::string key : {"plugin_paths", "\"plugin_paths\"", "!!str plugin_paths"}) {
+    PluginLoader loader(host);
+    const auto before = loader.search_path();
+    const Scenario s = load_peer_scenario_text(
+        text + key + ": [/no/such/dir, " + test::kScenarioDir.string() + "]\n", "peer", loader,
+        host);
+    EXPECT_EQ(s.plugin_paths, host) << key;
+    EXPECT_EQ(loader.search_path(), before) << key;
+  }
+  PluginLoader loader(host);
+  try {
+    load_peer_scenario_text("plugin_paths: []\n" + text + "plugin_paths: [/peer]\n", "peer", loader,
+                            host);
+    FAIL() << "a repeated plugin_paths was accepted";
+  } catch (const ScenarioError& error) {
+    EXPECT_TRUE(Contains(error.what(), "plugin_paths: is given twice (first at line 1:1)"));
+    EXPECT_FALSE(Contains(error.what(), "/peer"));
+  }
+}
+
 TEST(ScenarioLoader, ResolvedScenarioHasEveryKeyInAFixedOrder) {
   const Scenario s = load(kMinimal);
   const YAML::Node r = YAML::Load(s.resolved_yaml);

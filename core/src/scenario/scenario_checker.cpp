@@ -185,6 +185,11 @@ std::optional<YAML::Node> ScenarioChecker::check_list(const KeySpec& spec, const
         spec.describe());
     return std::nullopt;
   }
+  if (spec.form == KeyForm::directory_list && ignore_directory_lists_) {
+    YAML::Node none(YAML::NodeType::Sequence);
+    none.SetStyle(YAML::EmitterStyle::Flow);
+    return none;
+  }
   KeySpec element_spec;  // for map_list: each element is a mapping of spec.keys
   element_spec.form = KeyForm::map;
   element_spec.keys = spec.keys;

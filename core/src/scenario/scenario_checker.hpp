@@ -29,6 +29,11 @@ class ScenarioChecker {
   // directory_list key are added to `loader`'s search path as soon as they are checked.
   ScenarioChecker(ProblemList& problems, PluginLoader& loader, std::filesystem::path base_dir);
 
+  // For a server reading a peer's scenario: a directory_list key (plugin_paths) names folders of
+  // another host, so its value is never looked up here nor added to the loader; it checks as an
+  // empty list (a repeated key is still refused). The server supplies its own directories.
+  void ignore_directory_lists() { ignore_directory_lists_ = true; }
+
   // The normalized tree of `root` against the mapping `schema`.
   YAML::Node check_root(const KeySpec& schema, const YAML::Node& root);
 
@@ -81,6 +86,7 @@ class ScenarioChecker {
   ProblemList& problems_;
   PluginLoader& loader_;
   std::filesystem::path base_dir_;
+  bool ignore_directory_lists_ = false;
   std::map<std::string, PluginChoice> plugins_;
   std::map<std::string, YAML::Mark> marks_;
   std::vector<KeyPath> defaulted_;  // keys that were absent and took their schema default

@@ -264,6 +264,7 @@ Scenario load_text(const std::string& text, const std::string& origin,
 
   const KeySpec& schema = scenario_schema();
   ScenarioChecker checker(problems, loader, base_dir);
+  if (overrides.host_plugin_paths) checker.ignore_directory_lists();
   YAML::Node tree = checker.check_root(schema, root);
   check_consistency(tree, checker, problems);
   check_network_engine(tree, checker, problems, loader);
@@ -272,6 +273,7 @@ Scenario load_text(const std::string& text, const std::string& origin,
 
   Scenario scenario = build(tree, checker.plugins());
   scenario.source = origin;
+  if (overrides.host_plugin_paths) scenario.plugin_paths = *overrides.host_plugin_paths;
   YAML::Emitter resolved;
   emit_ordered(resolved, schema, tree);
   scenario.resolved_yaml = std::string(resolved.c_str()) + "\n";
@@ -294,6 +296,14 @@ Scenario load_scenario(const std::filesystem::path& file, const ScenarioOverride
 Scenario load_scenario_text(const std::string& yaml, const std::string& origin,
                             PluginLoader& loader, const ScenarioOverrides& overrides) {
   return load_text(yaml, origin, std::filesystem::current_path(), overrides, loader);
+}
+
+Scenario load_peer_scenario_text(const std::string& yaml, const std::string& origin,
+                                 PluginLoader& loader,
+                                 const std::vector<std::filesystem::path>& host_plugin_paths) {
+  ScenarioOverrides host;
+  host.host_plugin_paths = host_plugin_paths;
+  return load_text(yaml, origin, std::filesystem::current_path(), host, loader);
 }
 
 std::string resolved_yaml(const Scenario& scenario) { return scenario.resolved_yaml; }

@@ -21,6 +21,10 @@ struct ScenarioOverrides {
   std::vector<std::string> set;                  // "a.b.c=VALUE", applied in order
   std::optional<std::uint64_t> seed;             // --seed: replaces `seed`
   std::optional<std::filesystem::path> out_dir;  // --out: replaces output.dir
+  // A server's own plugin search path (`swarmnet net --listen`): the text's plugin_paths is
+  // never looked up on this host nor searched (ScenarioChecker::ignore_directory_lists); the
+  // Scenario gets these.
+  std::optional<std::vector<std::filesystem::path>> host_plugin_paths;
 };
 
 // Every problem found in a scenario. what() holds them one per line, each
@@ -46,6 +50,13 @@ Scenario load_scenario(const std::filesystem::path& file, const ScenarioOverride
 // plugin_paths are relative to the current working directory (a resolved scenario has none).
 Scenario load_scenario_text(const std::string& yaml, const std::string& origin,
                             PluginLoader& loader, const ScenarioOverrides& overrides = {});
+
+// A scenario as a server (`swarmnet net --listen`) reads a peer's hello: once, as
+// load_scenario_text(), with `host_plugin_paths` as the plugin search path whatever the text says
+// (no path the text's plugin_paths holds is looked up or searched on this host).
+Scenario load_peer_scenario_text(const std::string& yaml, const std::string& origin,
+                                 PluginLoader& loader,
+                                 const std::vector<std::filesystem::path>& host_plugin_paths);
 
 // Scenario::resolved as YAML text (scenario.resolved.yaml): equal scenarios give equal bytes, and
 // loading the text again gives the same scenario.
