@@ -54,6 +54,7 @@ enum class Service : std::uint8_t { sink, echo, step };
 
 constexpr std::byte kAckRequest{0xA5};
 constexpr std::uint64_t kRingBytes = std::uint64_t{1} << 22U;
+constexpr SimTime kStep{100'000'000};  // the welcome's step: 0.1 s
 
 WaitPolicy bench_policy() {
   WaitPolicy policy;
@@ -66,8 +67,8 @@ StepBatch make_batch(std::uint32_t robots) {
   // The study's traffic: 20% of robots send 5 messages/s; at 0.1 s steps that is 0.1 message
   // per robot per step, of 512 bytes.
   StepBatch batch;
-  batch.step = 1;
-  batch.start = SimTime{100'000'000};
+  batch.step = 0;  // steps follow from 0, each kStep after the last (the channel checks)
+  batch.start = SimTime{0};
   for (std::uint32_t i = 0; i < robots; ++i) batch.positions.emplace_back(i * 0.5, i * 0.25);
   for (std::uint32_t i = 0; i < std::max<std::uint32_t>(1, robots / 10); ++i) {
     batch.messages.push_back({i, i, (i + 7) % robots, 0, Payload(512, std::byte{1})});
@@ -93,7 +94,7 @@ void serve(Transport& transport, Service service) {
     Hello hello;
     if (!channel.receive_hello(hello).ok()) return;
     const Welcome welcome{1, static_cast<std::uint32_t>(std::stoul(hello.scenario_yaml)),
-                          100'000'000};
+                          kStep.count()};
     if (!channel.send_welcome(welcome).ok()) return;
     StepBatch batch;
     StepResult result;
@@ -224,7 +225,7 @@ void StepExchange(benchmark::State& state, Kind kind) {
   Hello hello;
   hello.scenario_yaml = std::to_string(robots);
   if (!channel.send_hello(hello).ok() ||
-      !channel.receive_welcome(Welcome{1, robots, 100'000'000}).ok()) {
+      !channel.receive_welcome(Welcome{1, robots, kStep.count()}).ok()) {
     state.SkipWithError("handshake failed");
     return;
   }
@@ -236,6 +237,7 @@ void StepExchange(benchmark::State& state, Kind kind) {
       break;
     }
     ++batch.step;
+    batch.start += kStep;
   }
   (void)channel.send_finish();
   state.counters["messages_per_step"] = static_cast<double>(batch.messages.size());
@@ -246,8 +248,8 @@ void StepCodec(benchmark::State& state) {
   InprocChannel link(kRingBytes, bench_policy());
   StepChannel robot(link.robot_end(), "the network end");
   StepChannel network(link.network_end(), "the robot end");
-  robot.fix_limits(Welcome{1, robots, 100'000'000});
-  network.fix_limits(Welcome{1, robots, 100'000'000});
+  robot.fix_limits(Welcome{1, robots, kStep.count()});
+  network.fix_limits(Welcome{1, robots, kStep.count()});
   StepBatch batch = make_batch(robots);
   StepResult result = make_result(batch);
   StepBatch received_batch;
@@ -260,6 +262,7 @@ void StepCodec(benchmark::State& state) {
       break;
     }
     result.step = ++batch.step;
+    batch.start += kStep;
   }
 }
 

@@ -22,8 +22,8 @@ std::vector<std::byte> encode(const Fields&... fields) {
 
 StepBatch sample_batch(std::uint32_t robots, std::uint32_t messages) {
   StepBatch batch;
-  batch.step = 7;
-  batch.start = SimTime{700'000'000};
+  batch.step = 0;  // a channel's first step, as the handshake's limits require
+  batch.start = SimTime{0};
   for (std::uint32_t i = 0; i < robots; ++i) batch.positions.emplace_back(i * 1.5, 1000.0 - i);
   for (std::uint32_t i = 0; i < messages; ++i) {
     AppMessage m;
@@ -364,6 +364,41 @@ TEST_F(StepChannelBounds, DeliveriesBeyondWhatTheSentMessagesCanProduceAreRefuse
             std::string::npos)
       << r.error;
   EXPECT_LE(got.deliveries.size(), 1U);
+}
+
+// Step i starts at exactly i x the welcome's step, and steps come in order: a far start would
+// have the network half simulate toward it for hours.
+TEST_F(StepChannelBounds, AStepOutOfOrderOrStartingElsewhereIsRefusedBeforeItIsRead) {
+  robot_.fix_limits(Welcome{1, 4, 100'000'000});
+  network_.fix_limits(Welcome{1, 4, 100'000'000});
+  StepBatch batch = sample_batch(4, 0);
+  StepBatch got;
+  bool finished = false;
+  ASSERT_TRUE(robot_.send_batch(batch).ok());
+  ASSERT_TRUE(network_.receive_batch(got, finished).ok());  // step 0 at 0
+  batch.step = 1;
+  batch.start = SimTime{100'000'000};
+  ASSERT_TRUE(robot_.send_batch(batch).ok());
+  ASSERT_TRUE(network_.receive_batch(got, finished).ok());  // step 1 at 0.1 s
+  batch.step = 2;
+  batch.start = SimTime{std::int64_t{1} << 62};
+  ASSERT_TRUE(robot_.send_batch(batch).ok());
+  ProtocolResult r = network_.receive_batch(got, finished);
+  EXPECT_EQ(r.io, IoStatus::corrupt);
+  EXPECT_NE(r.error.find("said step 2 starts at 4611686018427387904 ns"), std::string::npos)
+      << r.error;
+}
+
+TEST_F(StepChannelBounds, AStepNumberThatSkipsOrOverflowsIsRefused) {
+  network_.fix_limits(Welcome{1, 4, 100'000'000});
+  for (const std::uint64_t step : {std::uint64_t{3}, ~std::uint64_t{0}}) {
+    feed(encode(RecordType::step_begin, step, std::int64_t{0}, std::uint32_t{4}, std::uint32_t{0}));
+    StepBatch batch;
+    bool finished = false;
+    const ProtocolResult r = network_.receive_batch(batch, finished);
+    EXPECT_EQ(r.io, IoStatus::corrupt);
+    EXPECT_NE(r.error.find("where step 0 was due"), std::string::npos) << r.error;
+  }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "protocol/network_report_codec.hpp"
 
@@ -196,7 +197,9 @@ ProtocolResult StepChannel::receive_welcome(const Welcome& expected) {
 void StepChannel::fix_limits(const Welcome& welcome) {
   limits_.robots = welcome.robots;
   limits_.max_messages_per_step = std::uint64_t{welcome.robots} * kMaxMessagesPerRobotStep;
+  limits_.step_ns = welcome.step_ns;
   deliveries_owed_ = 0;
+  next_step_ = 0;
 }
 
 ProtocolResult StepChannel::over_limit(const std::string& what) const {
@@ -255,6 +258,21 @@ ProtocolResult StepChannel::receive_batch(StepBatch& batch, bool& finished) {
                       std::to_string(limits_.max_messages_per_step) + " (" +
                       std::to_string(kMaxMessagesPerRobotStep) + " per robot) may come in a step");
   }
+  if (batch.step != next_step_) {
+    return over_limit("sent step " + std::to_string(batch.step) + " where step " +
+                      std::to_string(next_step_) + " was due");
+  }
+  // step x step_ns, computed only where it cannot overflow (a step number past that is refused).
+  const bool start_representable =
+      limits_.step_ns > 0 &&
+      batch.step <=
+          static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max() / limits_.step_ns);
+  if (!start_representable || start_ns != static_cast<std::int64_t>(batch.step) * limits_.step_ns) {
+    return over_limit("said step " + std::to_string(batch.step) + " starts at " +
+                      std::to_string(start_ns) + " ns; the handshake's step of " +
+                      std::to_string(limits_.step_ns) + " ns puts it at step x step");
+  }
+  ++next_step_;
   batch.start = SimTime{start_ns};
   batch.positions.resize(robots);
   std::uint32_t filled = 0;

@@ -40,6 +40,7 @@ enum class RecordType : std::uint32_t {
 struct ProtocolLimits {
   std::uint32_t robots = 0;                 // positions per step, exactly
   std::uint64_t max_messages_per_step = 0;  // robots x kMaxMessagesPerRobotStep
+  std::int64_t step_ns = 0;                 // step i starts at exactly i x step_ns
 };
 
 // The largest swarm a welcome may fix (the scenario's own limit on robots.count, which
@@ -88,8 +89,10 @@ class StepChannel {
   ProtocolResult receive_hello(Hello& hello);
   ProtocolResult send_welcome(const Welcome& welcome);
 
-  // The limits a welcome implies: exactly `robots` positions, and at most
-  // robots x kMaxMessagesPerRobotStep messages a step. The handshake calls it; tests and
+  // The limits a welcome implies: exactly `robots` positions, at most
+  // robots x kMaxMessagesPerRobotStep messages a step, and steps numbered 0, 1, 2, ... each
+  // starting at its number times the welcome's step (a far start would have the network half
+  // simulate toward it for hours). The handshake calls it; tests and
   // benchmarks that skip the handshake call it themselves.
   void fix_limits(const Welcome& welcome);
   [[nodiscard]] const ProtocolLimits& limits() const { return limits_; }
@@ -138,6 +141,7 @@ class StepChannel {
   // Deliveries the messages sent so far can still produce (one per unicast message, one per
   // robot per broadcast): a network half that sends more is refused before it is buffered.
   std::uint64_t deliveries_owed_ = 0;
+  std::uint64_t next_step_ = 0;  // the step number the next step_begin must carry
 };
 
 }  // namespace swarmnet
