@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <utility>
@@ -268,6 +270,29 @@ TEST(NetworkScheduler, HasPassedComparesWithTheEventRunningNow) {
   EXPECT_TRUE(scheduler.has_passed(ns(9), reserved + 100));
   scheduler.run_until(ns(20));
   EXPECT_EQ(answers, (std::vector<bool>{true, false, true, false}));
+}
+
+// A stop signal must end even a window of millions of events: the loop asks every
+// kEventsPerInterruptCheck events and throws between two of them.
+std::atomic<bool> stop_now{false};
+TEST(NetworkScheduler, AnInterruptCheckEndsAWindowBetweenTwoEvents) {
+  Scheduler scheduler;
+  scheduler.set_interrupt_check([] { return stop_now.load(); });
+  std::uint64_t ran = 0;
+  std::function<void()> tick = [&] {
+    ++ran;
+    if (ran == 5000) stop_now.store(true);
+    scheduler.schedule_in(ns(1), [&] { tick(); });
+  };
+  scheduler.schedule_at(ns(0), [&] { tick(); });
+  EXPECT_THROW(scheduler.run_until(ns(1'000'000'000)), SimulationInterrupted);
+  // Asked at 4096 (false) and at 8192 events (true): not one event later than that.
+  EXPECT_EQ(ran, 2 * Scheduler::kEventsPerInterruptCheck);
+  stop_now.store(false);
+  Scheduler unchecked;  // no check: the window runs to its end
+  std::uint64_t count = 0;
+  for (int i = 0; i < 10000; ++i) unchecked.schedule_at(ns(i), [&count] { ++count; });
+  EXPECT_EQ(unchecked.run_until(ns(20000)), 10000U);
 }
 
 }  // namespace

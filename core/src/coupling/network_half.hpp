@@ -17,8 +17,10 @@ namespace swarmnet {
 // for one) into `run_dir` and sends the report. Plugins come from `loader`, the one that resolved
 // them when the scenario was validated. On any error it tells the robot half why (a failure
 // record), closes the channel and throws RunError.
+// With `stops_on_signal`, a stop signal (stop_signal.hpp) ends the run within a second, between
+// steps or inside one, with a failure naming the signal.
 void serve_network_half(const Scenario& scenario, PluginLoader& loader, StepChannel& channel,
-                        const std::filesystem::path& run_dir);
+                        const std::filesystem::path& run_dir, bool stops_on_signal = false);
 
 // What the network half simulates and where it writes, decided from the robot half's hello: the
 // scenario it validated, with the loader that resolved its plugins (used again to create them).
@@ -29,6 +31,9 @@ struct NetworkSetup {
   std::filesystem::path run_dir;
   PluginLoader* loader = nullptr;
   std::unique_ptr<PluginLoader> own_loader;
+  // A server's run (net --listen) ends on SIGTERM or SIGINT even mid-step; a child of
+  // `swarmnet run` or a thread stops with its robot half instead.
+  bool stops_on_signal = false;
 };
 
 // What a network half simulating `scenario` says in its welcome.

@@ -60,6 +60,11 @@ class NetworkSimulator final : public NetworkEngine {
   void finish() override;
 
   [[nodiscard]] SimTime now() const { return scheduler_.now(); }
+  // A stop flag the event loop polls (Scheduler::set_interrupt_check): a stop signal ends even a
+  // window of millions of events promptly, with SimulationInterrupted.
+  void set_interrupt_check(Scheduler::InterruptCheck check) {
+    scheduler_.set_interrupt_check(check);
+  }
   [[nodiscard]] SimTime step_length() const { return step_; }
   [[nodiscard]] std::size_t node_count() const { return nodes_.size(); }
   [[nodiscard]] const Channel& channel() const { return channel_; }

@@ -129,6 +129,11 @@ std::uint64_t Scheduler::run_until(SimTime end) {
     release(entry.slot);
     ++events_run_;
     callback();
+    if (interrupt_check_ != nullptr && events_run_ % kEventsPerInterruptCheck == 0 &&
+        interrupt_check_()) {
+      throw SimulationInterrupted("stopped at " + std::to_string(now_.count()) +
+                                  " ns of simulated time, inside a window");
+    }
   }
   now_ = end;
   return events_run_ - events_before;

@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <functional>
 #include <new>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -121,9 +122,19 @@ struct EventKey {
   friend bool operator==(const EventKey& a, const EventKey& b) = default;
 };
 
+// Thrown by Scheduler::run_until between two events when its interrupt check says stop.
+class SimulationInterrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 class Scheduler {
  public:
   using Callback = EventCallback;
+  // Asked every kEventsPerInterruptCheck events of a run_until (a relaxed load of a stop flag):
+  // a window of millions of events still ends within milliseconds of a stop signal.
+  using InterruptCheck = bool (*)();
+  static constexpr std::uint64_t kEventsPerInterruptCheck = 4096;
 
   Scheduler() = default;
   Scheduler(const Scheduler&) = delete;
@@ -172,6 +183,9 @@ class Scheduler {
   // Runs every event with time < `end` (including those scheduled meanwhile), then sets the clock
   // to `end` (>= now(), else std::logic_error). Returns the number of events run.
   std::uint64_t run_until(SimTime end);
+  // From now on, run_until throws SimulationInterrupted between two events once `check` returns
+  // true (nullptr: never). The events already run stay run; the simulation is not resumable.
+  void set_interrupt_check(InterruptCheck check) { interrupt_check_ = check; }
 
   // Drops every pending event without running it (the callbacks are destroyed now).
   void clear();
@@ -209,6 +223,7 @@ class Scheduler {
   void heap_pop();  // removes heap_.front()
   void sift_down(std::size_t index);
 
+  InterruptCheck interrupt_check_ = nullptr;
   SimTime now_{kTimeZero};
   SimTime run_end_{kTimeZero};  // the bound of the run_until in progress
   bool running_ = false;
