@@ -254,6 +254,11 @@ static int run_main(int argc, char** argv) {
                   "with --listen: seconds a connecting peer has to authenticate and say hello")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  net->add_option("--max-pending-handshakes", net_options.max_pending_handshakes,
+                  "with --listen: handshakes in flight at once; a connection beyond them drops "
+                  "the oldest pending one from the busiest address")
+      ->check(CLI::Range(1U, 4096U))
+      ->capture_default_str();
 
   ScenarioArguments validate_args;
   auto* validate = app.add_subcommand("validate", "check a scenario without running it");

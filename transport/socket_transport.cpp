@@ -225,7 +225,8 @@ int connect_unix(const std::string& path) {
   return fd;
 }
 
-int listen_tcp(const std::string& host, std::uint16_t port, std::uint16_t* bound_port) {
+int listen_tcp(const std::string& host, std::uint16_t port, std::uint16_t* bound_port,
+               int backlog) {
   addrinfo* addresses = resolve(host, port, true);
   std::string error = "no address";
   int fd = -1;
@@ -234,7 +235,7 @@ int listen_tcp(const std::string& host, std::uint16_t port, std::uint16_t* bound
     if (fd < 0) continue;
     int one = 1;
     ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
-    if (::bind(fd, a->ai_addr, a->ai_addrlen) != 0 || ::listen(fd, 1) != 0) {
+    if (::bind(fd, a->ai_addr, a->ai_addrlen) != 0 || ::listen(fd, backlog) != 0) {
       error = system_error();
       ::close(fd);
       fd = -1;

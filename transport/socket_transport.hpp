@@ -66,7 +66,10 @@ class SocketTransport final : public Transport {
 // Connection set-up; each throws TransportError naming the address and the system's reason.
 int listen_unix(const std::string& path);  // bound, listening socket
 int connect_unix(const std::string& path);
-int listen_tcp(const std::string& host, std::uint16_t port, std::uint16_t* bound_port = nullptr);
+// `backlog`: connections the kernel queues before accept (a server meeting many peers wants more
+// than the one a run's own child needs).
+int listen_tcp(const std::string& host, std::uint16_t port, std::uint16_t* bound_port = nullptr,
+               int backlog = 1);
 int connect_tcp(const std::string& host, std::uint16_t port);
 // Waits up to `policy.timeout` for one connection on `listener`, then closes the listener.
 int accept_one(int listener, const WaitPolicy& policy, const std::string& what);

@@ -1,8 +1,10 @@
-// A network half started with --listen trusts no peer (issue 12, part 1): it serves only peers
-// that prove they know its token, never loads code from a peer's plugin_paths, never writes
-// where a peer says, drops a silent peer after the handshake deadline and serves the next.
+// A network half started with --listen trusts no peer: it serves only peers that prove they know
+// its token, never loads code from a peer's plugin_paths (under any spelling, repeated or not),
+// never writes where a peer says, serves a real robot half in time under a flood of silent or
+// reconnecting peers, refuses a step that is not the next one, and stops on SIGTERM mid-run.
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <poll.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/stat.h>
@@ -10,10 +12,12 @@
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
+#include <atomic>
 #include <chrono>
 #include <fstream>
 #include <regex>
 #include <thread>
+#include <tuple>
 
 #include "command_runner.hpp"
 #include "coupling/peer_authentication.hpp"
@@ -59,6 +63,8 @@ class Server {
   Server(const Server&) = delete;
   Server& operator=(const Server&) = delete;
 
+  [[nodiscard]] pid_t pid() const { return pid_; }
+
   [[nodiscard]] int port() const { return port_; }
   [[nodiscard]] std::string address() const { return "tcp://127.0.0.1:" + std::to_string(port_); }
   [[nodiscard]] std::string log() const { return read_file(log_); }
@@ -88,19 +94,50 @@ class RemoteNetworkHalf : public ::testing::Test {
     write_token(dir_.path() / "token", "correct horse battery staple 42", 0600);
   }
 
+  // A real robot half; `extra` are further options (a shorter --step-timeout makes a robot half
+  // that is kept waiting give up, and so fail the test, in seconds).
   CommandResult run_robot_half(const Server& server, const std::string& token_file,
-                               const std::string& out) {
+                               const std::string& out, const std::string& extra = "") {
     return run_swarmnet("run " + std::string(SWARMNET_SOURCE_DIR) +
                         "/configs/quickstart.yaml --set duration_s=2 --set robots.count=10 -q "
                         "--net " +
                         server.address() + " --token-file " + token_file + " --out " +
-                        (dir_.path() / out).string());
+                        (dir_.path() / out).string() + " " + extra);
+  }
+
+  // An authenticated peer's channel after a welcome for `scenario` (two robots, 0.1 s steps).
+  struct Session {
+    std::unique_ptr<SocketTransport> transport;
+    std::unique_ptr<StepChannel> channel;
+    std::string error;  // why there is no session
+  };
+  Session hand_made_session(const Server& server, const std::string& scenario) {
+    Session s;
+    WaitPolicy policy;
+    policy.timeout = std::chrono::seconds(10);
+    s.transport = std::make_unique<SocketTransport>(
+        connect_tcp("127.0.0.1", static_cast<std::uint16_t>(server.port())), policy, "TCP");
+    if (std::string why =
+            authenticate_to_acceptor(*s.transport, PeerSecret::from_file(dir_.path() / "token"));
+        !why.empty()) {
+      s.error = why;
+      return s;
+    }
+    s.channel = std::make_unique<StepChannel>(*s.transport, "the network half");
+    Hello hello;
+    hello.scenario_yaml = scenario;
+    if (auto r = s.channel->send_hello(hello); !r.ok()) s.error = r.error;
+    if (auto r = s.channel->receive_welcome(Welcome{1, 2, 100'000'000});
+        s.error.empty() && !r.ok()) {
+      s.error = r.error;
+    }
+    return s;
   }
 
   // A peer written by hand: it knows the token and sends `scenario` in its hello, asking for
   // outputs in `run_dir`; then finishes at once. Returns what the server answered.
   std::string hand_made_peer(const Server& server, const std::string& scenario,
-                             const std::string& run_dir) {
+                             const std::string& run_dir = "") {
     WaitPolicy policy;
     policy.timeout = std::chrono::seconds(10);
     SocketTransport transport(connect_tcp("127.0.0.1", static_cast<std::uint16_t>(server.port())),
@@ -120,7 +157,7 @@ class RemoteNetworkHalf : public ::testing::Test {
   }
 
   // The quickstart for two robots, one simulated second, with `edit` applied.
-  static std::string scenario(const std::function<void(YAML::Node&)>& edit) {
+  static std::string scenario(const std::function<void(YAML::Node&)>& edit = [](YAML::Node&) {}) {
     YAML::Node tree = YAML::LoadFile(std::string(SWARMNET_SOURCE_DIR) + "/configs/quickstart.yaml");
     tree["robots"]["count"] = 2;
     tree["duration_s"] = 1.0;
@@ -153,11 +190,16 @@ TEST_F(RemoteNetworkHalf, AWrongTokenIsRefusedAndTheServerServesTheNextPeer) {
   EXPECT_NE(server.log().find("did not prove that it knows the token"), std::string::npos);
 }
 
+// The silent peer no longer holds the door: the real robot half is served beside it, and the
+// silent one is dropped at its own deadline.
 TEST_F(RemoteNetworkHalf, ASilentPeerIsDroppedAtTheHandshakeDeadline) {
-  Server server(dir_.path(), {"--handshake-timeout", "0.5"});
+  Server server(dir_.path(), {"--handshake-timeout", "0.5", "--serve-forever"});
   const int silent = connect_tcp("127.0.0.1", static_cast<std::uint16_t>(server.port()));
   const CommandResult served = run_robot_half(server, (dir_.path() / "token").string(), "run");
   EXPECT_EQ(served.exit_code, 0) << served.output << server.log();
+  for (int i = 0; i < 500 && server.log().find("timed out") == std::string::npos; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
   EXPECT_NE(server.log().find("timed out"), std::string::npos) << server.log();
   ::close(silent);
 }
@@ -238,6 +280,139 @@ TEST_F(RemoteNetworkHalf, AMisspelledPluginIsAnsweredWithoutLoadingAnyLibrary) {
   EXPECT_NE(validated.output.find("marker_routing"), std::string::npos) << validated.output;
   EXPECT_NE(validated.output.find("flooding"), std::string::npos) << validated.output;
   EXPECT_FALSE(std::filesystem::exists(marker)) << "validate ran a library's code to list names";
+}
+
+// yaml-cpp answers a lookup with the first of two equal keys: a server that removed "the"
+// plugin_paths once left the second in place, and loaded the peer's library from it.
+TEST_F(RemoteNetworkHalf, ARepeatedPluginPathsKeyIsRefusedAtItsLineAndUsesNoRun) {
+  const std::filesystem::path marker = dir_.path() / "marker";
+  ::setenv("SWARMNET_TEST_MARKER", marker.c_str(), 1);
+  Server server(dir_.path(), {"--runs", "1"});
+  ::unsetenv("SWARMNET_TEST_MARKER");
+  const std::string text =
+      "plugin_paths: []\nplugin_paths: [" SWARMNET_TEST_FIXTURE_DIR "/untrusted]\n" +
+      scenario([](YAML::Node& tree) { tree["network"]["routing"]["plugin"] = "marker_routing"; });
+  const std::string answer = hand_made_peer(server, text);
+  EXPECT_NE(answer.find(":2:1: plugin_paths: is given twice (first at line 1:1)"),
+            std::string::npos)
+      << answer;
+  EXPECT_FALSE(std::filesystem::exists(marker)) << "the server ran the peer's plugin";
+  EXPECT_EQ(answer.find(SWARMNET_TEST_FIXTURE_DIR), std::string::npos) << answer;
+  // The refusal did not use up the server's only run: a real robot half is served after it.
+  const CommandResult served = run_robot_half(server, (dir_.path() / "token").string(), "run");
+  EXPECT_EQ(served.exit_code, 0) << served.output << server.log();
+  EXPECT_EQ(server.wait_exit(), 0) << server.log();
+}
+
+// Quoted, tagged or anchored, the key is plugin_paths to YAML; none of its folders is looked up
+// on the server (the old reply told the peer which of its guesses existed there).
+TEST_F(RemoteNetworkHalf, PluginPathsUnderAnySpellingAreNeverLookedUpOnTheServer) {
+  Server server(dir_.path(), {"--runs", "3"});
+  for (const std::string key : {"\"plugin_paths\"", "!!str plugin_paths", "? plugin_paths\n"}) {
+    const std::string text = key + (key.back() == '\n' ? ": " : ": ") + "[/nonexistent/dir, " +
+                             std::string(SWARMNET_TEST_FIXTURE_DIR) + "/untrusted]\n" + scenario();
+    EXPECT_EQ(hand_made_peer(server, text), "ok") << key << "\n" << server.log();
+  }
+  EXPECT_EQ(server.wait_exit(), 0) << server.log();
+  EXPECT_EQ(server.log().find("is not a directory"), std::string::npos) << server.log();
+}
+
+// 100 connections that never speak, more than the handshakes allowed in flight, opened before
+// the real robot half; the silent peers' own deadline (30 s) is far beyond the robot half's
+// patience (--step-timeout 10): it is served only if the server meets it beside them.
+TEST_F(RemoteNetworkHalf, AFloodOfSilentPeersDoesNotKeepARealRobotHalfWaiting) {
+  Server server(dir_.path(), {"--handshake-timeout", "30"});
+  std::vector<int> silent;
+  for (int i = 0; i < 100; ++i) {
+    silent.push_back(connect_tcp("127.0.0.1", static_cast<std::uint16_t>(server.port())));
+  }
+  const CommandResult served =
+      run_robot_half(server, (dir_.path() / "token").string(), "run", "--step-timeout 10");
+  EXPECT_EQ(served.exit_code, 0) << served.output << server.log();
+  EXPECT_NE(server.log().find("handshakes were pending"), std::string::npos) << server.log();
+  for (const int fd : silent) ::close(fd);
+  EXPECT_EQ(server.wait_exit(), 0) << server.log();
+}
+
+// 40 attackers that reconnect as soon as they are dropped, against 16 handshakes in flight: the
+// old server, one handshake at a time, kept a real robot half out for good.
+TEST_F(RemoteNetworkHalf, ReconnectingAttackersDoNotKeepARealRobotHalfOut) {
+  Server server(dir_.path(), {"--handshake-timeout", "1", "--max-pending-handshakes", "16"});
+  std::atomic<bool> attacking{true};
+  std::vector<std::thread> attackers;
+  const auto port = static_cast<std::uint16_t>(server.port());
+  for (int i = 0; i < 40; ++i) {
+    attackers.emplace_back([&attacking, port] {
+      while (attacking.load()) {
+        int fd = -1;
+        try {
+          fd = connect_tcp("127.0.0.1", port);
+        } catch (const std::exception&) {
+          continue;  // the server is gone: the test's end
+        }
+        char byte = 0;
+        pollfd p{fd, POLLIN, 0};
+        // Silent until the server drops us (its challenge is read and ignored), then again.
+        while (attacking.load() && ::poll(&p, 1, 50) >= 0) {
+          if ((p.revents & POLLIN) != 0 && ::read(fd, &byte, 1) <= 0) break;
+        }
+        ::close(fd);
+      }
+    });
+  }
+  const CommandResult served =
+      run_robot_half(server, (dir_.path() / "token").string(), "run", "--step-timeout 10");
+  attacking.store(false);
+  for (auto& attacker : attackers) attacker.join();
+  EXPECT_EQ(served.exit_code, 0) << served.output << server.log();
+  EXPECT_EQ(server.wait_exit(), 0) << server.log();
+}
+
+// A step_begin whose start is 2^62 ns had the server simulate toward it, deaf to SIGTERM.
+TEST_F(RemoteNetworkHalf, AStepThatIsNotTheNextOneIsRefusedAndTheServerServesOn) {
+  Server server(dir_.path(), {"--runs", "3"});
+  for (const auto& [step, start_ns, expected] :
+       {std::tuple<std::uint64_t, std::int64_t, std::string>{0, std::int64_t{1} << 62,
+                                                             "said step 0 starts at"},
+        std::tuple<std::uint64_t, std::int64_t, std::string>{5, 500'000'000,
+                                                             "sent step 5 where step 0 was due"}}) {
+    Session session = hand_made_session(server, scenario());
+    ASSERT_EQ(session.error, "") << server.log();
+    StepBatch batch;
+    batch.step = step;
+    batch.start = SimTime{start_ns};
+    batch.positions = {Vec2(1.0, 1.0), Vec2(2.0, 2.0)};
+    ASSERT_TRUE(session.channel->send_batch(batch).ok());
+    StepResult result;
+    const ProtocolResult answer = session.channel->receive_result(result);
+    EXPECT_FALSE(answer.ok());
+    EXPECT_NE(answer.error.find(expected), std::string::npos) << answer.error;
+  }
+  const CommandResult served = run_robot_half(server, (dir_.path() / "token").string(), "run");
+  EXPECT_EQ(served.exit_code, 0) << served.output << server.log();
+  EXPECT_EQ(server.wait_exit(), 1) << server.log();  // two of its three runs failed
+}
+
+TEST_F(RemoteNetworkHalf, SigtermStopsTheServerMidRunAndTheRobotHalfSaysWhy) {
+  Server server(dir_.path(), {"--serve-forever"});
+  const std::filesystem::path robot_log = dir_.path() / "robot.log";
+  const pid_t robot =
+      spawn_swarmnet({"run", std::string(SWARMNET_SOURCE_DIR) + "/configs/quickstart.yaml", "--set",
+                      "duration_s=100000", "-q", "--net", server.address(), "--token-file",
+                      (dir_.path() / "token").string(), "--out", (dir_.path() / "run").string()},
+                     robot_log);
+  for (int i = 0; i < 1000 && server.log().find("run run-0001") == std::string::npos; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_NE(server.log().find("run run-0001"), std::string::npos) << server.log();
+  ::kill(server.pid(), SIGTERM);
+  EXPECT_EQ(server.wait_exit(), 1) << server.log();
+  int status = 0;
+  ASSERT_EQ(::waitpid(robot, &status, 0), robot);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) != 0);
+  EXPECT_NE(read_file(robot_log).find("stopped by SIGTERM on the network half's host"),
+            std::string::npos)
+      << read_file(robot_log);
 }
 
 }  // namespace

@@ -2,14 +2,16 @@
 
 #include <signal.h>
 #include <sys/prctl.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include <yaml-cpp/yaml.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 
+#include "coupling/handshake_acceptor.hpp"
 #include "coupling/network_half.hpp"
 #include "coupling/network_link.hpp"
 #include "coupling/peer_authentication.hpp"
@@ -155,23 +157,22 @@ std::string redact(std::string message, const std::vector<std::filesystem::path>
   return message;
 }
 
-// What a remote robot half's hello asks this server to simulate: its scenario without its
-// plugin_paths (code is loaded only from the server's own search path), in a run directory this
-// server names. Errors reach the peer with this host's paths redacted.
+// What a remote robot half's hello asks this server to simulate: its scenario, parsed once, with
+// the server's own plugin search path and run directory set on the typed settings (the text's
+// plugin_paths is never read, whatever its spelling; a repeated key is refused). Errors reach the
+// peer with this host's paths redacted.
 NetworkSetup remote_setup(const Hello& hello, const NetworkProcessOptions& options,
                           const std::filesystem::path& out) {
   auto loader = std::make_unique<PluginLoader>(options.plugin_paths);
   std::vector<std::filesystem::path> private_dirs = loader->search_path();
   private_dirs.push_back(out);
   try {
-    YAML::Node tree = YAML::Load(hello.scenario_yaml);
-    if (tree.IsMap() && tree["plugin_paths"]) tree.remove("plugin_paths");
-    YAML::Emitter emitter;
-    emitter << tree;
+    Scenario scenario = load_peer_scenario_text(hello.scenario_yaml, "the robot half's scenario",
+                                                *loader, options.plugin_paths);
     PluginLoader* resolved = loader.get();
-    NetworkSetup setup{load_scenario_text(emitter.c_str(), "the robot half's scenario", *loader),
-                       next_run_dir(out), resolved, std::move(loader)};
-    setup.scenario.plugin_paths = options.plugin_paths;
+    NetworkSetup setup{std::move(scenario), next_run_dir(out), resolved, std::move(loader)};
+    setup.scenario.output.dir = setup.run_dir;
+    setup.stops_on_signal = true;
     return setup;
   } catch (const std::exception& error) {
     say(std::string("refused a scenario: ") + error.what());
@@ -191,44 +192,36 @@ int serve_remote(const NetworkProcessOptions& options) {
   make_private_directory(out);
   const auto [host, port] = listen_address(options.listen);
   std::uint16_t bound = 0;
-  const int listener = listen_tcp(host, port, &bound);
+  const int listener = listen_tcp(host, port, &bound, SOMAXCONN);
   say("serving robot halves on " + host + ":" + std::to_string(bound) + ", runs in " +
       out.string() +
       (options.serve_forever ? ", until stopped"
                              : ", " + std::to_string(options.runs) + " run(s)"));
-  WaitPolicy patient;
-  patient.timeout = std::chrono::hours(24 * 365);  // a server waits for its clients
-  patient.peer_alive = [] { return stop_signal() == 0; };
-  WaitPolicy policy;
-  policy.timeout = options.step_timeout;
-  policy.peer_alive = [] { return stop_signal() == 0; };
+  HandshakeSettings handshakes;
+  handshakes.deadline = options.handshake_timeout;
+  handshakes.max_pending = options.max_pending_handshakes;
+  handshakes.max_record_bytes = kHandshakeRecordBytes;
+  handshakes.policy.timeout = options.step_timeout;
+  handshakes.policy.peer_alive = [] { return stop_signal() == 0; };
+  HandshakeAcceptor door(listener, "TCP " + host + ":" + std::to_string(bound), secret, handshakes,
+                         &say);
 
   int status = 0;
   for (std::uint32_t served = 0; options.serve_forever || served < options.runs;) {
-    std::string peer;
-    int fd = -1;
-    try {
-      fd = accept_next(listener, patient, "TCP " + host + ":" + std::to_string(bound), &peer);
-    } catch (const std::exception& error) {
-      if (stop_signal() != 0) break;
-      ::close(listener);
-      throw;
-    }
-    SocketTransport transport(fd, policy, "TCP from " + peer);
-    // Until the peer has authenticated and its hello is read: small records, a short deadline.
-    transport.set_max_record_bytes(kHandshakeRecordBytes);
+    std::optional<AuthenticatedPeer> next = door.next([] { return stop_signal() != 0; });
+    if (!next) break;
+    SocketTransport& transport = *next->transport;
+    const std::string& peer = next->address;
+    // It may have waited behind a run: the hello gets a deadline of its own.
     transport.set_deadline(std::chrono::steady_clock::now() + options.handshake_timeout);
-    if (std::string why = authenticate_connector(transport, secret); !why.empty()) {
-      say("refused " + peer + ": " + why);
-      continue;
-    }
-    ++served;
     StepChannel channel(transport, "the robot half at " + peer);
+    bool accepted = false;  // a refused scenario does not use up one of --runs
     try {
       serve_network_connection(channel, [&](const Hello& hello) {
         transport.clear_deadline();
         transport.set_max_record_bytes(SocketTransport::kMaxRecordBytes);
         NetworkSetup setup = remote_setup(hello, options, out);
+        accepted = true;
         say("run " + setup.run_dir.filename().string() + " for " + peer + ": " +
             std::to_string(setup.scenario.robots.count) + " robots");
         return setup;
@@ -236,10 +229,11 @@ int serve_remote(const NetworkProcessOptions& options) {
       say("finished the run for " + peer);
     } catch (const std::exception& error) {
       say("the run for " + peer + " failed: " + error.what());
-      status = 1;
+      if (accepted) status = 1;
     }
+    if (accepted) ++served;
   }
-  ::close(listener);
+  if (stop_signal() != 0) say(std::string("stopped by ") + stop_signal_name(stop_signal()));
   return status;
 }
 

@@ -3,9 +3,10 @@
 //
 // Started by `swarmnet run` (--shm, --uds, --tcp, --parent) it serves that run. Started by hand
 // with --listen it is a server for robot halves elsewhere, and trusts none of them: each must
-// prove it knows the token before anything it sends is parsed, it loads plugins only from the
-// server's own search path, writes only under the server's own output directory, and serves
-// runs one after another (docs/security.md).
+// prove it knows the token before anything it sends is parsed (handshakes run concurrently, each
+// under its own deadline: handshake_acceptor.hpp), it loads plugins only from the server's own
+// search path, writes only under the server's own output directory, and serves runs one after
+// another (docs/security.md).
 #pragma once
 
 #include <sys/types.h>
@@ -32,6 +33,7 @@ struct NetworkProcessOptions {
   std::uint32_t runs = 1;                           // runs to serve before exiting
   bool serve_forever = false;                       // ... or never stop
   std::chrono::milliseconds handshake_timeout{std::chrono::seconds(5)};
+  std::uint32_t max_pending_handshakes = 64;  // in flight at once; more evict the oldest
 };
 
 // The output directory of a server started without --out: $XDG_STATE_HOME/swarmnet/net, else
