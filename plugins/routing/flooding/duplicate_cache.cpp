@@ -1,14 +1,22 @@
 #include "duplicate_cache.hpp"
 
 #include <algorithm>
-#include <bit>
 
 namespace swarmnet::flooding {
 
 DuplicateCache::DuplicateCache(std::size_t capacity)
-    : order_(std::max<std::size_t>(capacity, 1)),
-      slots_(std::bit_ceil(2 * order_.size()), kEmpty),
+    : capacity_(std::max<std::size_t>(capacity, 1)),
+      slots_(kInitialSlots, kEmpty),
       mask_(slots_.size() - 1) {}
+
+void DuplicateCache::grow_slots() {
+  std::vector<std::uint64_t> old(slots_.size() * 2, kEmpty);
+  old.swap(slots_);
+  mask_ = slots_.size() - 1;
+  for (const std::uint64_t k : old) {
+    if (k != kEmpty) slots_[find_slot(k)] = k;
+  }
+}
 
 std::size_t DuplicateCache::home(std::uint64_t k) const {
   // Fibonacci hashing: sequences of one originator are consecutive, so mix the bits.
@@ -30,6 +38,7 @@ void DuplicateCache::add_key(std::uint64_t k) {
   if (k == kEmpty) {
     has_empty_key_ = true;
   } else {
+    if (2 * (size_ + 1) > slots_.size()) grow_slots();  // at most half full
     slots_[find_slot(k)] = k;
   }
   ++size_;
@@ -60,10 +69,15 @@ void DuplicateCache::erase_key(std::uint64_t k) {
 bool DuplicateCache::insert(NodeId originator, std::uint32_t sequence) {
   const std::uint64_t k = key(originator, sequence);
   if (contains_key(k)) return false;
-  if (size_ == order_.size()) erase_key(order_[next_]);  // evict the oldest
+  if (order_.size() < capacity_) {  // still filling: the oldest is order_[0] when it is full
+    add_key(k);
+    order_.push_back(k);
+    return true;
+  }
+  erase_key(order_[next_]);  // evict the oldest
   add_key(k);
   order_[next_] = k;
-  next_ = (next_ + 1) % order_.size();
+  next_ = (next_ + 1) % capacity_;
   return true;
 }
 

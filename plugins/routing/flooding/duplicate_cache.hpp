@@ -6,8 +6,11 @@
 // packets a node can see while copies of one packet are still travelling.
 //
 // Storage: a ring of keys in insertion order and an open-addressing hash set (linear probing,
-// at most half full, backward-shift deletion) over them. Every node looks its cache up once per
-// copy it hears, so this is on the flooding hot path; a tree set cost a cache miss per level.
+// at most half full, backward-shift deletion) over them. Both grow with what the cache holds, up
+// to `capacity`: a node that hears few packets costs a few hundred bytes, not 24 x capacity
+// (a swarm of 100,000 nodes with the limit at 10^7 would otherwise ask for terabytes up front).
+// Every node looks its cache up once per copy it hears, so this is on the flooding hot path; a tree
+// set cost a cache miss per level.
 #pragma once
 
 #include <cstddef>
@@ -26,7 +29,11 @@ class DuplicateCache {
   bool insert(NodeId originator, std::uint32_t sequence);
   [[nodiscard]] bool contains(NodeId originator, std::uint32_t sequence) const;
   [[nodiscard]] std::size_t size() const { return size_; }
-  [[nodiscard]] std::size_t capacity() const { return order_.size(); }
+  [[nodiscard]] std::size_t capacity() const { return capacity_; }
+  // Bytes the cache holds now (its two tables), for tests of its growth.
+  [[nodiscard]] std::size_t allocated_bytes() const {
+    return (order_.capacity() + slots_.capacity()) * sizeof(std::uint64_t);
+  }
 
  private:
   // A slot holding kEmpty is free; the one key equal to kEmpty is tracked by has_empty_key_.
@@ -41,9 +48,14 @@ class DuplicateCache {
   bool contains_key(std::uint64_t k) const;
   void add_key(std::uint64_t k);
   void erase_key(std::uint64_t k);
+  void grow_slots();  // doubles the hash set and re-inserts every key
 
-  std::vector<std::uint64_t> order_;  // ring of keys in insertion order
-  std::size_t next_ = 0;              // ring slot the next insertion takes (the oldest when full)
+  // A small table to start with; it doubles as the cache fills.
+  static constexpr std::size_t kInitialSlots = 16;
+
+  std::size_t capacity_;
+  std::vector<std::uint64_t> order_;  // keys in insertion order; a ring once capacity_ long
+  std::size_t next_ = 0;              // once full: the ring slot of the oldest key, taken next
   std::size_t size_ = 0;
   std::vector<std::uint64_t> slots_;  // hash set; size a power of two >= 2 x capacity
   std::size_t mask_ = 0;

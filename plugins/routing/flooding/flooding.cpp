@@ -23,9 +23,11 @@ PluginInfo Flooding::info() {
           integer_param("ttl", 32, "hops", "hops a packet may travel from its originator", 1, 255),
           real_param("jitter_max_s", 0.005, "s", "largest random delay before a rebroadcast", 0.0,
                      10.0),
-          integer_param("cache_size", 4096, "packets",
-                        "(originator, sequence) pairs remembered for duplicate detection (FIFO)", 1,
-                        10000000),
+          integer_param(
+              "cache_size", 4096, "packets",
+              "(originator, sequence) pairs remembered for duplicate detection (FIFO; memory "
+              "grows with the pairs held, 24 to 48 bytes each, not with this limit)",
+              1, 10000000),
       }};
 }
 

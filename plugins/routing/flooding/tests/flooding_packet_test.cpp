@@ -108,4 +108,22 @@ TEST(FloodingDuplicateCache, MatchesAReferenceFifoSet) {
 }
 
 }  // namespace
+// The cache holds what it was given, not its limit: a limit of 10^7 cost 240 MB a node up front.
+TEST(FloodingDuplicateCache, GrowsWithWhatItHoldsUpToItsCapacity) {
+  DuplicateCache cache(10'000'000);
+  EXPECT_LT(cache.allocated_bytes(), 1024U);
+  for (std::uint32_t s = 0; s < 1000; ++s) ASSERT_TRUE(cache.insert(3, s));
+  EXPECT_LT(cache.allocated_bytes(), 64U * 1024U);  // about 3 x 1000 keys of 8 bytes, doubled
+  for (std::uint32_t s = 0; s < 1000; ++s) EXPECT_TRUE(cache.contains(3, s)) << s;
+  EXPECT_EQ(cache.capacity(), 10'000'000U);
+  // Grown to its capacity it evicts the oldest, as a cache made full from the start did.
+  DuplicateCache small(100);
+  for (std::uint32_t s = 0; s < 250; ++s) ASSERT_TRUE(small.insert(1, s));
+  EXPECT_EQ(small.size(), 100U);
+  EXPECT_FALSE(small.contains(1, 149));
+  EXPECT_TRUE(small.contains(1, 150));
+  EXPECT_TRUE(small.insert(1, 0));
+  EXPECT_FALSE(small.contains(1, 150));
+}
+
 }  // namespace swarmnet::flooding
