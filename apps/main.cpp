@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bench_command.hpp"
+#include "coupling/memory_budget.hpp"
 #include "coupling/network_process.hpp"
 #include "coupling/stop_signal.hpp"
 #include "default_scenario.hpp"
@@ -259,6 +260,10 @@ static int run_main(int argc, char** argv) {
                   "the oldest pending one from the busiest address")
       ->check(CLI::Range(1U, 4096U))
       ->capture_default_str();
+  std::string net_max_memory;
+  net->add_option("--max-memory", net_max_memory,
+                  "with --listen: memory the runs served may take, e.g. 4G (default: half the "
+                  "host's physical memory); a scenario that needs more is refused");
 
   ScenarioArguments validate_args;
   auto* validate = app.add_subcommand("validate", "check a scenario without running it");
@@ -439,6 +444,13 @@ static int run_main(int argc, char** argv) {
     net_options.step_timeout = std::chrono::milliseconds(std::llround(net_timeout_ms));
     net_options.out = net_out;
     net_options.plugin_paths.assign(net_plugin_paths.begin(), net_plugin_paths.end());
+    try {
+      net_options.max_memory = net_max_memory.empty() ? swarmnet::default_memory_budget()
+                                                      : swarmnet::parse_memory_size(net_max_memory);
+    } catch (const std::invalid_argument& error) {
+      std::fprintf(stderr, "swarmnet net: --max-memory: %s\n", error.what());
+      return kExitBadInput;
+    }
     net_options.handshake_timeout =
         std::chrono::milliseconds(std::llround(handshake_timeout_s * 1e3));
     if (!net_options.listen.empty()) swarmnet::install_stop_handlers();

@@ -105,13 +105,14 @@ class RemoteNetworkHalf : public ::testing::Test {
                         (dir_.path() / out).string() + " " + extra);
   }
 
-  // An authenticated peer's channel after a welcome for `scenario` (two robots, 0.1 s steps).
+  // An authenticated peer's channel after a welcome for `scenario` (`robots`, 0.1 s steps).
   struct Session {
     std::unique_ptr<SocketTransport> transport;
     std::unique_ptr<StepChannel> channel;
     std::string error;  // why there is no session
   };
-  Session hand_made_session(const Server& server, const std::string& scenario) {
+  Session hand_made_session(const Server& server, const std::string& scenario,
+                            std::uint32_t robots = 2) {
     Session s;
     WaitPolicy policy;
     policy.timeout = std::chrono::seconds(10);
@@ -127,7 +128,7 @@ class RemoteNetworkHalf : public ::testing::Test {
     Hello hello;
     hello.scenario_yaml = scenario;
     if (auto r = s.channel->send_hello(hello); !r.ok()) s.error = r.error;
-    if (auto r = s.channel->receive_welcome(Welcome{1, 2, 100'000'000});
+    if (auto r = s.channel->receive_welcome(Welcome{1, robots, 100'000'000});
         s.error.empty() && !r.ok()) {
       s.error = r.error;
     }
@@ -334,10 +335,11 @@ TEST_F(RemoteNetworkHalf, AFloodOfSilentPeersDoesNotKeepARealRobotHalfWaiting) {
   EXPECT_EQ(server.wait_exit(), 0) << server.log();
 }
 
-// 40 attackers that reconnect as soon as they are dropped, against 16 handshakes in flight: the
-// old server, one handshake at a time, kept a real robot half out for good.
+// 40 attackers that reconnect as soon as they are dropped (at a 1 s deadline), with the default
+// 64 handshakes in flight: the old server, one handshake at a time, kept a real robot half out
+// for good.
 TEST_F(RemoteNetworkHalf, ReconnectingAttackersDoNotKeepARealRobotHalfOut) {
-  Server server(dir_.path(), {"--handshake-timeout", "1", "--max-pending-handshakes", "16"});
+  Server server(dir_.path(), {"--handshake-timeout", "1"});
   std::atomic<bool> attacking{true};
   std::vector<std::thread> attackers;
   const auto port = static_cast<std::uint16_t>(server.port());
@@ -413,6 +415,74 @@ TEST_F(RemoteNetworkHalf, SigtermStopsTheServerMidRunAndTheRobotHalfSaysWhy) {
   EXPECT_NE(read_file(robot_log).find("stopped by SIGTERM on the network half's host"),
             std::string::npos)
       << read_file(robot_log);
+}
+
+// "key: value" lines of /proc/PID/status, in kB.
+std::uint64_t status_kb(pid_t pid, const std::string& key) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(status, line);) {
+    if (line.rfind(key + ":", 0) == 0) return std::stoull(line.substr(key.size() + 1));
+  }
+  return 0;
+}
+
+// Under a budget the kernel enforces, a swarm whose network does not fit is refused before its
+// first step, the server serves on, and what a run took goes back to the system after it.
+TEST_F(RemoteNetworkHalf, AScenarioBeyondTheMemoryBudgetIsRefusedBeforeItsFirstStep) {
+  Server server(dir_.path(), {"--max-memory", "4M", "--runs", "1"});
+  Session big = hand_made_session(server, scenario([](YAML::Node& tree) {
+                                    tree["robots"]["count"] = 100000;
+                                    tree["arena"]["width_m"] = 20000;
+                                    tree["arena"]["height_m"] = 20000;
+                                  }),
+                                  100000);
+  EXPECT_NE(big.error.find("the network of 100000 robots needs more memory than the server's "
+                           "memory budget of 4 MiB (--max-memory) allows"),
+            std::string::npos)
+      << big.error << server.log();
+  big = Session{};
+  const CommandResult served = run_robot_half(server, (dir_.path() / "token").string(), "run");
+  EXPECT_EQ(served.exit_code, 0) << served.output << server.log();
+  EXPECT_EQ(server.wait_exit(), 0) << server.log();  // a refused scenario is not one of --runs
+}
+
+TEST_F(RemoteNetworkHalf, OneStepsPayloadIsBoundedByTheMemoryBudget) {
+  Server server(dir_.path(), {"--max-memory", "256K"});  // a step may carry 64 KiB
+  Session session = hand_made_session(server, scenario());
+  ASSERT_EQ(session.error, "") << server.log();
+  StepBatch batch;
+  batch.positions = {Vec2(1.0, 1.0), Vec2(2.0, 2.0)};
+  for (std::uint64_t m = 0; m < 100; ++m) {
+    batch.messages.push_back({m, 0, 1, 0, Payload(kMaxPayloadBytes, std::byte{7})});
+  }
+  ASSERT_TRUE(session.channel->send_batch(batch).ok());
+  StepResult result;
+  const ProtocolResult answer = session.channel->receive_result(result);
+  EXPECT_NE(answer.error.find("sent more than 0 MiB of payload in step 0"), std::string::npos)
+      << answer.error;
+  EXPECT_EQ(server.wait_exit(), 1) << server.log();
+}
+
+TEST_F(RemoteNetworkHalf, TheServerGivesARunsMemoryBackWhenItEnds) {
+  Server server(dir_.path(), {"--serve-forever"});
+  Session session = hand_made_session(server, scenario([](YAML::Node& tree) {
+                                        tree["robots"]["count"] = 50000;
+                                        tree["arena"]["width_m"] = 10000;
+                                        tree["arena"]["height_m"] = 10000;
+                                      }),
+                                      50000);
+  ASSERT_EQ(session.error, "") << server.log();
+  ASSERT_TRUE(session.channel->send_finish().ok());
+  NetworkReport report;
+  ASSERT_TRUE(session.channel->receive_report(report).ok());
+  for (int i = 0; i < 500 && server.log().find("idle;") == std::string::npos; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  const std::uint64_t peak_kb = status_kb(server.pid(), "VmHWM");
+  const std::uint64_t idle_kb = status_kb(server.pid(), "VmRSS");
+  EXPECT_LT(idle_kb * 2, peak_kb) << "idle " << idle_kb << " kB after a peak of " << peak_kb
+                                  << " kB\n"
+                                  << server.log();
 }
 
 }  // namespace

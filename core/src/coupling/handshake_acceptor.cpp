@@ -117,8 +117,11 @@ void HandshakeAcceptor::handshake(Pending* pending) {
   transport->set_deadline(pending->accepted + settings_.deadline);
   const std::string why = authenticate_connector(*transport, secret_);
   const std::lock_guard lock(mutex_);
+  // Evicted after its last record arrived: the connection is shut down, so it is not handed out.
+  const bool evicted = !pending->in_flight;
   pending->in_flight = false;  // from here on nobody shuts the descriptor down
   pending->finished = true;
+  if (why.empty() && evicted) return;
   if (!why.empty()) {
     log_("refused " + pending->address + ": " + why);
     return;  // the transport closes the connection

@@ -1,9 +1,11 @@
 #include "coupling/network_half.hpp"
 
 #include <memory>
+#include <new>
 #include <optional>
 
 #include "coupling/cpu_clock.hpp"
+#include "coupling/memory_budget.hpp"
 #include "coupling/network_engine_choice.hpp"
 #include "coupling/stop_signal.hpp"
 #include "network/scheduler.hpp"
@@ -24,19 +26,42 @@ std::string stopped_by_signal() {
          " on the network half's host";
 }
 
-void serve(const Scenario& scenario, PluginLoader& loader, StepChannel& channel,
-           const std::filesystem::path& run_dir, bool stops_on_signal) {
-  const double cpu_start = thread_cpu_seconds();
-  double transport_cpu = 0.0;
+// What a run's network half holds from its set-up to its end: the engine and its trace files.
+struct NetworkRun {
   std::optional<AtomicFile> trace;
   std::optional<AtomicFile> frames;
-  if (scenario.output.packet_trace) trace.emplace(run_dir / kPacketTraceFile);
-  if (scenario.output.frame_trace) frames.emplace(run_dir / kFrameTraceFile);
-  const std::unique_ptr<NetworkEngine> engine = make_network_engine(
-      scenario, loader, trace ? &trace->stream() : nullptr, frames ? &frames->stream() : nullptr,
-      stops_on_signal ? &stop_requested : nullptr);
-  NetworkEngine& simulator = *engine;
+  std::unique_ptr<NetworkEngine> engine;
+  double cpu_start = 0.0;  // thread CPU time when the set-up began
+};
 
+// Builds the engine, the run's fixed cost (nodes, plugins, tables), before the welcome: a
+// scenario that does not fit in memory is refused before its first step.
+void open_run(NetworkRun& run, const NetworkSetup& setup, const std::filesystem::path& run_dir) {
+  run.cpu_start = thread_cpu_seconds();
+  const Scenario& scenario = setup.scenario;
+  const std::uint64_t heap_before = heap_in_use_bytes();
+  try {
+    if (scenario.output.packet_trace) run.trace.emplace(run_dir / kPacketTraceFile);
+    if (scenario.output.frame_trace) run.frames.emplace(run_dir / kFrameTraceFile);
+    run.engine =
+        make_network_engine(scenario, *setup.loader, run.trace ? &run.trace->stream() : nullptr,
+                            run.frames ? &run.frames->stream() : nullptr,
+                            setup.stops_on_signal ? &stop_requested : nullptr);
+  } catch (const std::bad_alloc&) {
+    const std::uint64_t reached = heap_in_use_bytes() - std::min(heap_in_use_bytes(), heap_before);
+    run.engine.reset();
+    throw RunError(
+        "the network of " + std::to_string(scenario.robots.count) +
+        " robots needs more memory than " +
+        (setup.memory_limit.empty() ? std::string("this host gave it") : setup.memory_limit) +
+        " allows: its set-up had taken " + describe_bytes(reached) +
+        " when an allocation failed; refused before the first step");
+  }
+}
+
+void serve(NetworkRun& run, const NetworkSetup& setup, StepChannel& channel) {
+  double transport_cpu = 0.0;
+  NetworkEngine& simulator = *run.engine;
   StepBatch batch;
   StepResult result;
   for (;;) {
@@ -46,11 +71,16 @@ void serve(const Scenario& scenario, PluginLoader& loader, StepChannel& channel,
     transport_cpu += thread_cpu_seconds() - before_receive;
     if (!received.ok()) throw RunError(received.error);
     if (finished) break;
-    if (stops_on_signal && stop_requested()) throw RunError(stopped_by_signal());
+    if (setup.stops_on_signal && stop_requested()) throw RunError(stopped_by_signal());
     try {
       simulator.run_step(batch, result);
     } catch (const SimulationInterrupted& interrupted) {
       throw RunError(stopped_by_signal() + " (" + interrupted.what() + ")");
+    } catch (const std::bad_alloc&) {
+      throw RunError(
+          "ran out of memory in step " + std::to_string(batch.step) + " (" +
+          (setup.memory_limit.empty() ? std::string("the host's memory") : setup.memory_limit) +
+          ")");
     }
     const double before_send = thread_cpu_seconds();
     const ProtocolResult sent = channel.send_result(result);
@@ -58,15 +88,21 @@ void serve(const Scenario& scenario, PluginLoader& loader, StepChannel& channel,
     if (!sent.ok()) throw RunError(sent.error);
   }
   simulator.finish();
-  if (trace) trace->commit();
-  if (frames) frames->commit();
+  if (run.trace) run.trace->commit();
+  if (run.frames) run.frames->commit();
 
   NetworkReport report = simulator.report();
-  const double total_cpu = thread_cpu_seconds() - cpu_start;
+  const double total_cpu = thread_cpu_seconds() - run.cpu_start;
   report.network_cpu_s = total_cpu - transport_cpu;
   report.transport_cpu_s = transport_cpu;
   const ProtocolResult sent = channel.send_report(report);
   if (!sent.ok()) throw RunError(sent.error);
+}
+
+[[noreturn]] void fail(StepChannel& channel, const std::exception& error) {
+  channel.send_failure(error.what());
+  channel.transport().close();
+  throw RunError(std::string("network half: ") + error.what());
 }
 
 }  // namespace
@@ -75,35 +111,31 @@ Welcome welcome_for(const Scenario& scenario) {
   return Welcome{scenario.seed, scenario.robots.count, from_seconds(scenario.step_s).count()};
 }
 
-void serve_network_half(const Scenario& scenario, PluginLoader& loader, StepChannel& channel,
-                        const std::filesystem::path& run_dir, bool stops_on_signal) {
-  try {
-    serve(scenario, loader, channel, run_dir, stops_on_signal);
-  } catch (const std::exception& error) {
-    channel.send_failure(error.what());
-    channel.transport().close();
-    throw RunError(std::string("network half: ") + error.what());
-  }
-  channel.transport().close();
-}
-
 void serve_network_connection(StepChannel& channel,
-                              const std::function<NetworkSetup(const Hello&)>& setup) {
+                              const std::function<NetworkSetup(const Hello&)>& setup,
+                              bool* welcomed) {
   Hello hello;
   std::optional<NetworkSetup> accepted;
+  std::optional<NetworkRun> run;
   try {
     const ProtocolResult received = channel.receive_hello(hello);
     if (!received.ok()) throw RunError(received.error);
     accepted.emplace(setup(hello));
+    open_run(run.emplace(), *accepted, accepted->run_dir);
+    if (accepted->step_payload_limit != 0) channel.limit_step_payload(accepted->step_payload_limit);
     const ProtocolResult sent = channel.send_welcome(welcome_for(accepted->scenario));
     if (!sent.ok()) throw RunError(sent.error);
+    if (welcomed != nullptr) *welcomed = true;
   } catch (const std::exception& error) {
-    channel.send_failure(error.what());
-    channel.transport().close();
-    throw RunError(std::string("network half: ") + error.what());
+    fail(channel, error);
   }
-  serve_network_half(accepted->scenario, *accepted->loader, channel, accepted->run_dir,
-                     accepted->stops_on_signal);
+  try {
+    serve(*run, *accepted, channel);
+  } catch (const std::exception& error) {
+    run.reset();  // the engine's memory goes before the failure is reported
+    fail(channel, error);
+  }
+  channel.transport().close();
 }
 
 }  // namespace swarmnet

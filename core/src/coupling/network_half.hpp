@@ -3,24 +3,17 @@
 // thread (in-process transport) or a child process (shared memory, sockets).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <string>
 
 #include "plugin/plugin_loader.hpp"
 #include "protocol/step_channel.hpp"
 #include "scenario/scenario.hpp"
 
 namespace swarmnet {
-
-// Runs until the robot half sends finish, then commits the packet trace (when the scenario asks
-// for one) into `run_dir` and sends the report. Plugins come from `loader`, the one that resolved
-// them when the scenario was validated. On any error it tells the robot half why (a failure
-// record), closes the channel and throws RunError.
-// With `stops_on_signal`, a stop signal (stop_signal.hpp) ends the run within a second, between
-// steps or inside one, with a failure naming the signal.
-void serve_network_half(const Scenario& scenario, PluginLoader& loader, StepChannel& channel,
-                        const std::filesystem::path& run_dir, bool stops_on_signal = false);
 
 // What the network half simulates and where it writes, decided from the robot half's hello: the
 // scenario it validated, with the loader that resolved its plugins (used again to create them).
@@ -31,16 +24,27 @@ struct NetworkSetup {
   std::filesystem::path run_dir;
   PluginLoader* loader = nullptr;
   std::unique_ptr<PluginLoader> own_loader;
-  // A server's run (net --listen) ends on SIGTERM or SIGINT even mid-step; a child of
-  // `swarmnet run` or a thread stops with its robot half instead.
+  // A server's run (net --listen) ends on SIGTERM or SIGINT even mid-step, within a second; a
+  // child of `swarmnet run` or a thread stops with its robot half instead.
   bool stops_on_signal = false;
+  // A server's memory budget: one step's payloads may hold at most this many bytes (0: no
+  // bound), and what an allocation failure is reported against ("the server's memory budget of
+  // 4.0 GiB (--max-memory)"; empty: the host's memory).
+  std::uint64_t step_payload_limit = 0;
+  std::string memory_limit;
 };
 
 // What a network half simulating `scenario` says in its welcome.
 Welcome welcome_for(const Scenario& scenario);
 
-// Answers the handshake (welcome, or failure with the reason), then serve_network_half().
+// Answers the handshake: reads the hello, decides the setup, builds the network engine (its
+// fixed cost: a scenario that does not fit is refused here), then sends the welcome, or a
+// failure with the reason. Then serves steps until the robot half sends finish, commits the
+// packet and frame traces into the run directory (when the scenario asks for them) and sends the
+// report. On any error it tells the robot half why (a failure record), closes the channel and
+// throws RunError. `welcomed`, when given, is set once the welcome is sent (the run began).
 void serve_network_connection(StepChannel& channel,
-                              const std::function<NetworkSetup(const Hello&)>& setup);
+                              const std::function<NetworkSetup(const Hello&)>& setup,
+                              bool* welcomed = nullptr);
 
 }  // namespace swarmnet

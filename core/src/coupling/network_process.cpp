@@ -1,5 +1,6 @@
 #include "coupling/network_process.hpp"
 
+#include <pthread.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/socket.h>
@@ -12,6 +13,7 @@
 #include <optional>
 
 #include "coupling/handshake_acceptor.hpp"
+#include "coupling/memory_budget.hpp"
 #include "coupling/network_half.hpp"
 #include "coupling/network_link.hpp"
 #include "coupling/peer_authentication.hpp"
@@ -173,6 +175,9 @@ NetworkSetup remote_setup(const Hello& hello, const NetworkProcessOptions& optio
     NetworkSetup setup{std::move(scenario), next_run_dir(out), resolved, std::move(loader)};
     setup.scenario.output.dir = setup.run_dir;
     setup.stops_on_signal = true;
+    setup.step_payload_limit = options.max_memory / 4;
+    setup.memory_limit =
+        "the server's memory budget of " + describe_bytes(options.max_memory) + " (--max-memory)";
     return setup;
   } catch (const std::exception& error) {
     say(std::string("refused a scenario: ") + error.what());
@@ -190,13 +195,27 @@ int serve_remote(const NetworkProcessOptions& options) {
   const PeerSecret secret = PeerSecret::from_file(token);
   const std::filesystem::path out = options.out.empty() ? private_output_dir() : options.out;
   make_private_directory(out);
+  // Before any thread starts: a handshake needs little stack (an HMAC), so the server's threads
+  // get 256 KiB each instead of the 8 MiB default; their reserved stacks are counted apart from
+  // the budget.
+  constexpr std::uint64_t kThreadStackBytes = std::uint64_t{256} << 10U;
+  pthread_attr_t thread_defaults;
+  if (::pthread_attr_init(&thread_defaults) == 0) {
+    if (::pthread_attr_setstacksize(&thread_defaults, kThreadStackBytes) == 0) {
+      ::pthread_setattr_default_np(&thread_defaults);
+    }
+    ::pthread_attr_destroy(&thread_defaults);
+  }
+  limit_process_memory(MemoryBudget{options.max_memory},
+                       (std::uint64_t{options.max_pending_handshakes} + 4) * kThreadStackBytes);
   const auto [host, port] = listen_address(options.listen);
   std::uint16_t bound = 0;
   const int listener = listen_tcp(host, port, &bound, SOMAXCONN);
   say("serving robot halves on " + host + ":" + std::to_string(bound) + ", runs in " +
       out.string() +
       (options.serve_forever ? ", until stopped"
-                             : ", " + std::to_string(options.runs) + " run(s)"));
+                             : ", " + std::to_string(options.runs) + " run(s)") +
+      ", memory budget " + describe_bytes(options.max_memory));
   HandshakeSettings handshakes;
   handshakes.deadline = options.handshake_timeout;
   handshakes.max_pending = options.max_pending_handshakes;
@@ -215,23 +234,28 @@ int serve_remote(const NetworkProcessOptions& options) {
     // It may have waited behind a run: the hello gets a deadline of its own.
     transport.set_deadline(std::chrono::steady_clock::now() + options.handshake_timeout);
     StepChannel channel(transport, "the robot half at " + peer);
-    bool accepted = false;  // a refused scenario does not use up one of --runs
+    bool accepted = false;  // welcomed: a refused scenario does not use up one of --runs
     try {
-      serve_network_connection(channel, [&](const Hello& hello) {
-        transport.clear_deadline();
-        transport.set_max_record_bytes(SocketTransport::kMaxRecordBytes);
-        NetworkSetup setup = remote_setup(hello, options, out);
-        accepted = true;
-        say("run " + setup.run_dir.filename().string() + " for " + peer + ": " +
-            std::to_string(setup.scenario.robots.count) + " robots");
-        return setup;
-      });
+      serve_network_connection(
+          channel,
+          [&](const Hello& hello) {
+            transport.clear_deadline();
+            transport.set_max_record_bytes(SocketTransport::kMaxRecordBytes);
+            NetworkSetup setup = remote_setup(hello, options, out);
+            say("run " + setup.run_dir.filename().string() + " for " + peer + ": " +
+                std::to_string(setup.scenario.robots.count) + " robots");
+            return setup;
+          },
+          &accepted);
       say("finished the run for " + peer);
     } catch (const std::exception& error) {
       say("the run for " + peer + " failed: " + error.what());
       if (accepted) status = 1;
     }
-    if (accepted) ++served;
+    if (accepted) {
+      ++served;
+      say("idle; " + describe_bytes(return_free_memory()) + " resident");
+    }
   }
   if (stop_signal() != 0) say(std::string("stopped by ") + stop_signal_name(stop_signal()));
   return status;

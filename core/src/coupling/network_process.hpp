@@ -34,6 +34,9 @@ struct NetworkProcessOptions {
   bool serve_forever = false;                       // ... or never stop
   std::chrono::milliseconds handshake_timeout{std::chrono::seconds(5)};
   std::uint32_t max_pending_handshakes = 64;  // in flight at once; more evict the oldest
+  // Memory the runs may take above the server's own footprint (memory_budget.hpp); a quarter of
+  // it bounds one step's payloads.
+  std::uint64_t max_memory = 0;
 };
 
 // The output directory of a server started without --out: $XDG_STATE_HOME/swarmnet/net, else

@@ -300,6 +300,7 @@ ProtocolResult StepChannel::receive_batch(StepBatch& batch, bool& finished) {
     filled += count;
   }
   batch.messages.resize(messages);
+  std::uint64_t payload_bytes = 0;
   for (AppMessage& message : batch.messages) {
     if (auto r = receive(type, reader); !r.ok()) return r;
     if (type != RecordType::message) return unexpected(type, "message");
@@ -307,6 +308,14 @@ ProtocolResult StepChannel::receive_batch(StepBatch& batch, bool& finished) {
         !reader->get(message.destination) || !reader->get(message.port) ||
         !reader->get_bytes(message.payload, kMaxPayloadBytes) || !reader->at_end()) {
       return malformed(type);
+    }
+    payload_bytes += message.payload.size();
+    if (payload_bytes > step_payload_limit_) {
+      batch.messages.clear();  // give the memory back before the failure is reported
+      batch.messages.shrink_to_fit();
+      return over_limit("sent more than " + std::to_string(step_payload_limit_ >> 20U) +
+                        " MiB of payload in step " + std::to_string(batch.step) +
+                        ", the most the network half's memory budget allows in one step");
     }
   }
   if (auto r = receive(type, reader); !r.ok()) return r;

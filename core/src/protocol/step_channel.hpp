@@ -96,6 +96,9 @@ class StepChannel {
   // benchmarks that skip the handshake call it themselves.
   void fix_limits(const Welcome& welcome);
   [[nodiscard]] const ProtocolLimits& limits() const { return limits_; }
+  // Network side: the payload bytes one step's messages may hold together (a server's memory
+  // budget sets it; unbounded otherwise). A step beyond it is refused as it is read.
+  void limit_step_payload(std::uint64_t bytes) { step_payload_limit_ = bytes; }
 
   // Robot side.
   ProtocolResult send_batch(const StepBatch& batch);
@@ -142,6 +145,7 @@ class StepChannel {
   // robot per broadcast): a network half that sends more is refused before it is buffered.
   std::uint64_t deliveries_owed_ = 0;
   std::uint64_t next_step_ = 0;  // the step number the next step_begin must carry
+  std::uint64_t step_payload_limit_ = ~std::uint64_t{0};
 };
 
 }  // namespace swarmnet

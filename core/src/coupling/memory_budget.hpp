@@ -1,0 +1,37 @@
+// How much memory a network-half server (`swarmnet net --listen`) lets the runs it serves take.
+// The kernel enforces it (RLIMIT_DATA: heap and private mappings), so a scenario that would need
+// more fails with std::bad_alloc inside this process, which the server reports and survives,
+// instead of the host's OOM killer taking whatever it picks.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace swarmnet {
+
+struct MemoryBudget {
+  std::uint64_t bytes = 0;  // what the runs may use, above the server's own footprint
+};
+
+// "4G", "512M", "65536K" or plain bytes (binary units); throws std::invalid_argument naming the
+// text and the expected form.
+std::uint64_t parse_memory_size(const std::string& text);
+
+// Half the host's physical memory: a server that takes at most that leaves the host usable.
+std::uint64_t default_memory_budget();
+
+// Sets this process's RLIMIT_DATA to what it uses now plus `budget.bytes` plus `reserve` (for
+// the server's own threads' stacks). Throws RunError with the system's reason if it cannot.
+void limit_process_memory(const MemoryBudget& budget, std::uint64_t reserve);
+
+// Bytes the heap holds for the program now (glibc's mallinfo2: in use, not free).
+std::uint64_t heap_in_use_bytes();
+
+// Gives free heap memory back to the system (malloc_trim) after a run; returns the resident
+// set size afterwards, in bytes (from /proc/self/statm; 0 when unreadable).
+std::uint64_t return_free_memory();
+
+// "1.5 GiB", "320 MiB" for messages.
+std::string describe_bytes(std::uint64_t bytes);
+
+}  // namespace swarmnet
