@@ -485,5 +485,36 @@ TEST_F(RemoteNetworkHalf, TheServerGivesARunsMemoryBackWhenItEnds) {
                                   << server.log();
 }
 
+// The server's output directory holds every peer's runs: it is created private, and an
+// existing one that others may enter is refused with the fix.
+TEST_F(RemoteNetworkHalf, TheOutputDirectoryIsPrivate) {
+  const std::filesystem::path out = dir_.path() / "deep" / "served";
+  const std::filesystem::path log = dir_.path() / "server.log";
+  const pid_t server = spawn_swarmnet({"net", "--listen", "127.0.0.1:0", "--token-file",
+                                       (dir_.path() / "token").string(), "--out", out.string()},
+                                      log);
+  for (int i = 0; i < 500 && read_file(log).find("serving") == std::string::npos; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ::kill(server, SIGKILL);
+  ::waitpid(server, nullptr, 0);
+  ASSERT_NE(read_file(log).find("serving"), std::string::npos) << read_file(log);
+  struct stat info {};
+  ASSERT_EQ(::stat(out.c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 0777U, 0700U);
+  const std::filesystem::path open_dir = dir_.path() / "open";
+  std::filesystem::create_directories(open_dir);
+  ::chmod(open_dir.c_str(), 0755);
+  const CommandResult refused =
+      run_swarmnet("net --listen 127.0.0.1:0 --token-file " + (dir_.path() / "token").string() +
+                   " --out " + open_dir.string());
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.output.find("may be entered by other users (mode 0755); make it private with "
+                                "'chmod 700 " +
+                                open_dir.string() + "'"),
+            std::string::npos)
+      << refused.output;
+}
+
 }  // namespace
 }  // namespace swarmnet::testing

@@ -122,16 +122,28 @@ std::pair<std::string, std::uint16_t> listen_address(const std::string& text) {
   return parse_host_port(text);
 }
 
-// A directory only this user may use: created 0700, or an existing one that is ours.
+// A directory only this user may use: created 0700, or an existing one that is ours and that no
+// one else may enter (the runs of every peer are written there).
 void make_private_directory(const std::filesystem::path& dir) {
   std::error_code ec;
+  const bool existed = std::filesystem::exists(dir, ec);
   std::filesystem::create_directories(dir, ec);
   if (ec) throw RunError("cannot create " + dir.string() + ": " + ec.message());
+  if (!existed && ::chmod(dir.c_str(), 0700) != 0) {
+    throw RunError("cannot make " + dir.string() + " private: " + std::strerror(errno));
+  }
   struct stat info {};
   if (::stat(dir.c_str(), &info) != 0 || !S_ISDIR(info.st_mode)) {
     throw RunError(dir.string() + " is not a directory");
   }
   if (info.st_uid != ::geteuid()) throw RunError(dir.string() + " belongs to another user");
+  if ((info.st_mode & 077U) != 0) {
+    char mode[8];
+    std::snprintf(mode, sizeof mode, "%04o", info.st_mode & 07777U);
+    throw RunError(dir.string() + " may be entered by other users (mode " + mode +
+                   "); make it private with 'chmod 700 " + dir.string() +
+                   "' or choose another --out");
+  }
 }
 
 // OUT/run-NNNN, the first number not taken: named by the server, never by the peer.
