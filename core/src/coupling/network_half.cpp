@@ -15,7 +15,7 @@ namespace swarmnet {
 namespace {
 
 void serve(const Scenario& scenario, PluginLoader& loader, StepChannel& channel,
-           const std::filesystem::path& run_dir) {
+           const std::filesystem::path& run_dir, TraceCommit traces) {
   const double cpu_start = thread_cpu_seconds();
   double transport_cpu = 0.0;
   std::optional<AtomicFile> trace;
@@ -42,8 +42,14 @@ void serve(const Scenario& scenario, PluginLoader& loader, StepChannel& channel,
     if (!sent.ok()) throw RunError(sent.error);
   }
   simulator.finish();
-  if (trace) trace->commit();
-  if (frames) frames->commit();
+  for (std::optional<AtomicFile>* file : {&trace, &frames}) {
+    if (!*file) continue;
+    if (traces == TraceCommit::by_robot_half) {
+      (*file)->hand_over();
+    } else {
+      (*file)->commit();
+    }
+  }
 
   NetworkReport report = simulator.report();
   const double total_cpu = thread_cpu_seconds() - cpu_start;
@@ -60,9 +66,9 @@ Welcome welcome_for(const Scenario& scenario) {
 }
 
 void serve_network_half(const Scenario& scenario, PluginLoader& loader, StepChannel& channel,
-                        const std::filesystem::path& run_dir) {
+                        const std::filesystem::path& run_dir, TraceCommit traces) {
   try {
-    serve(scenario, loader, channel, run_dir);
+    serve(scenario, loader, channel, run_dir, traces);
   } catch (const std::exception& error) {
     channel.send_failure(error.what());
     channel.transport().close();
@@ -86,7 +92,12 @@ void serve_network_connection(StepChannel& channel,
     channel.transport().close();
     throw RunError(std::string("network half: ") + error.what());
   }
-  serve_network_half(accepted->scenario, *accepted->loader, channel, accepted->run_dir);
+  // A half writing into the robot half's own run directory (a child, a thread) leaves its traces
+  // to be committed with the run's other outputs; a server names a directory of its own.
+  std::error_code ec;
+  const bool beside = std::filesystem::absolute(accepted->run_dir, ec) == hello.run_dir;
+  serve_network_half(accepted->scenario, *accepted->loader, channel, accepted->run_dir,
+                     beside ? TraceCommit::by_robot_half : TraceCommit::here);
 }
 
 }  // namespace swarmnet

@@ -95,6 +95,7 @@ class InprocLink final : public NetworkLink {
   [[nodiscard]] std::string describe() const override {
     return "in-process rings, " + mib(channel_.ring_bytes()) + " each way";
   }
+  [[nodiscard]] pid_t local_network_pid() const override { return ::getpid(); }
   std::string finish() override {
     thread_.join();
     return error_;
@@ -138,6 +139,7 @@ class ChildLink final : public NetworkLink {
   [[nodiscard]] std::string describe() const override {
     return description_ + ", network half pid " + std::to_string(child_->pid());
   }
+  [[nodiscard]] pid_t local_network_pid() const override { return child_->pid(); }
   void connected() override {
     if (segment_) segment_->remove_name();
   }
@@ -161,6 +163,7 @@ class RemoteLink final : public NetworkLink {
       : transport_(std::move(transport)), description_(std::move(description)) {}
   Transport& transport() override { return *transport_; }
   [[nodiscard]] std::string describe() const override { return description_; }
+  [[nodiscard]] pid_t local_network_pid() const override { return 0; }
   std::string finish() override { return ""; }
 
  private:
