@@ -9,6 +9,7 @@
 #include "coupling/network_half.hpp"
 #include "coupling/peer_authentication.hpp"
 #include "coupling/peer_cpu.hpp"
+#include "coupling/socket_directory.hpp"
 #include "coupling/stop_signal.hpp"
 #include "inproc_channel.hpp"
 #include "outputs/run_error.hpp"
@@ -197,26 +198,6 @@ std::vector<std::string> child_arguments(const LinkOptions& options, const std::
           std::to_string(options.step_timeout.count())};
 }
 
-// A private directory for the Unix socket: mode 0700, removed when the object goes.
-class PrivateDirectory {
- public:
-  PrivateDirectory() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "swarmnet-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr) throw RunError("cannot create a directory in /tmp");
-    path_ = pattern;
-  }
-  ~PrivateDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  PrivateDirectory(const PrivateDirectory&) = delete;
-  PrivateDirectory& operator=(const PrivateDirectory&) = delete;
-  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
 // A socket child learns this run's one-time secret from its environment, which only this user
 // can read; whoever connects must prove it knows it (another local user could connect first).
 std::vector<std::string> child_environment(const PeerSecret& secret) {
@@ -275,7 +256,7 @@ std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario, PluginL
                                          description);
     }
     case TransportKind::uds: {
-      PrivateDirectory directory;
+      SocketDirectory directory;
       const std::string path = (directory.path() / "network.sock").string();
       const int listener = listen_unix(path);
       const PeerSecret secret = PeerSecret::random();

@@ -13,6 +13,7 @@
 #include "coupling/cpu_clock.hpp"
 #include "coupling/network_half.hpp"
 #include "coupling/network_link.hpp"
+#include "coupling/socket_directory.hpp"
 #include "coupling/stop_signal.hpp"
 #include "display/progress_line.hpp"
 #include "outputs/atomic_file.hpp"
@@ -215,6 +216,9 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
 
     for (const std::string& name : remove_stale_segments()) {
       log.line("removed /dev/shm/" + name + ", left behind by a run that crashed");
+    }
+    for (const auto& directory : remove_stale_socket_directories()) {
+      log.line("removed " + directory.string() + ", left behind by a run that crashed");
     }
     const auto link = open_network_link(scenario, loader, outcome.dir, options.link);
     StepChannel channel(link->transport(), "the network half");
