@@ -7,7 +7,9 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
+#include "outputs/positions_trace.hpp"
 #include "outputs/run_error.hpp"
 #include "small_tmpfs.hpp"
 
@@ -42,6 +44,26 @@ TEST(AtomicFile, AFullDiskIsReportedWithTheSystemsReason) {
   }
   EXPECT_FALSE(std::filesystem::exists(path));
   EXPECT_FALSE(std::filesystem::exists(temporary));
+}
+
+// A trace that seeks back to its header (a run a world ended early) on a full disk: the seek
+// writes what was buffered, and its failure gives the system's reason too.
+TEST(AtomicFile, ATraceRewritingItsHeaderOnAFullDiskSaysWhy) {
+  SmallTmpfs disk(256 * 1024);
+  if (!disk.why_not().empty()) GTEST_SKIP() << disk.why_not();
+  ASSERT_TRUE(disk.leave_free(16 * 1024));
+  AtomicFile file(disk.path() / "positions.bin");
+  PositionsTraceWriter positions(file.stream(), 1000, 10, SimTime(100'000'000));
+  const std::vector<Vec2> robots(1000, Vec2(1.0, 2.0));
+  for (int step = 0; step < 2; ++step) positions.sample(robots);  // 32 KB into 16 KB, buffered
+  try {
+    positions.finish();
+    FAIL() << "the header was rewritten on a full disk";
+  } catch (const RunError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "cannot record the step count in the positions trace's header: No space left on "
+              "device");
+  }
 }
 
 TEST(AtomicFile, SeeksRewriteInPlaceAsAFileStreamDoes) {

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstring>
 
 namespace swarmnet {
 
@@ -53,6 +54,12 @@ FileBuffer::pos_type FileBuffer::seekoff(off_type off, std::ios_base::seekdir di
 
 FileBuffer::pos_type FileBuffer::seekpos(pos_type pos, std::ios_base::openmode which) {
   return seekoff(off_type(pos), std::ios_base::beg, which);
+}
+
+std::string write_failure(std::ostream& out) {
+  const auto* file = dynamic_cast<const FileBuffer*>(out.rdbuf());
+  if (file != nullptr && file->error() != 0) return std::strerror(file->error());
+  return "the output stream failed";
 }
 
 }  // namespace swarmnet

@@ -3,7 +3,9 @@
 // (std::filebuf does not say why a write failed). Seeks write what is buffered first.
 #pragma once
 
+#include <ostream>
 #include <streambuf>
+#include <string>
 #include <vector>
 
 namespace swarmnet {
@@ -29,5 +31,9 @@ class FileBuffer final : public std::streambuf {
   std::vector<char> buffer_;
   int error_ = 0;
 };
+
+// Why writing to `out` failed: the system's reason when it writes through a FileBuffer (an
+// AtomicFile's stream), else that the stream failed.
+std::string write_failure(std::ostream& out);
 
 }  // namespace swarmnet
