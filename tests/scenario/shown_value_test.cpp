@@ -20,6 +20,10 @@ TEST(ShownValue, ShortTextIsShownWholeLongTextCutWithItsLength) {
   EXPECT_EQ(shown_value(std::string(80, 'b')), std::string(80, 'b'));
   EXPECT_EQ(shown_value(std::string(81, 'b')), std::string(80, 'b') + "... (81 bytes)");
   EXPECT_EQ(shown_value(kHuge), kShown);
+  // A path is cut only beyond the longest the system accepts.
+  const std::string path = "/" + std::string(200, 'p');
+  EXPECT_EQ(shown_value(path, kShownPathChars), path);
+  EXPECT_EQ(shown_value(kHuge, kShownPathChars), std::string(4096, 'a') + "... (102400 bytes)");
   // Not in the middle of a character: "é" is 2 bytes, the 80th and 81st.
   const std::string accented = std::string(79, 'c') + "\xC3\xA9" + std::string(10, 'c');
   EXPECT_EQ(shown_value(accented), std::string(79, 'c') + "... (91 bytes)");

@@ -15,6 +15,7 @@
 #include "outputs/run_error.hpp"
 #include "protocol/step_channel.hpp"
 #include "ring_transport.hpp"
+#include "scenario/shown_value.hpp"
 #include "shm_segment.hpp"
 #include "socket_transport.hpp"
 #include "transport_error.hpp"
@@ -223,7 +224,7 @@ std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario, PluginL
   if (!options.remote.empty()) {
     const std::string prefix = "tcp://";
     if (!options.remote.starts_with(prefix)) {
-      throw RunError("--net takes tcp://HOST:PORT, not '" + options.remote + "'");
+      throw RunError("--net takes tcp://HOST:PORT, not '" + shown_value(options.remote) + "'");
     }
     const auto [host, port] = split_host_port(options.remote.substr(prefix.size()));
     const std::filesystem::path token = token_file_from(options.token_file);
