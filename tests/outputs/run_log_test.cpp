@@ -59,6 +59,43 @@ TEST(RunLog, AFullDiskStillGetsTheReason) {
                 (disk.path() / "summary.json").string() + ": No space left on device\n");
 }
 
+// A log that outgrows its room on a full disk: its lines are refused with the reason before they
+// take the failure line's room, which still holds the reason the run failed.
+TEST(RunLog, LinesBeyondTheRoomAreRefusedButTheFailureStillFits) {
+  SmallTmpfs disk(512 * 1024);
+  if (!disk.why_not().empty()) GTEST_SKIP() << disk.why_not();
+  const std::filesystem::path path = disk.path() / "run.log";
+  RunLog log(path);
+  ASSERT_TRUE(disk.leave_free(0));
+  const std::string progress(99, 'p');
+  std::size_t written = 0;
+  try {
+    for (; written < 10000; ++written) log.line(progress);
+    FAIL() << "a megabyte of lines fitted in a full disk";
+  } catch (const RunError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "cannot write " + path.string() + ": No space left on device");
+  }
+  EXPECT_GT(written, 500U);  // most of the 64 KiB reserved held lines
+  const std::string failure =
+      "run failed: cannot write " + path.string() + ": No space left on device";
+  log.fail(failure);
+  const std::string text = text_of(path);
+  EXPECT_EQ(text.size(), written * 100 + failure.size() + 1);  // every line written, whole
+  EXPECT_TRUE(text.ends_with("\n" + failure + "\n"));
+}
+
+TEST(RunLog, GrowsPastItsFirstRoomWhenTheDiskHasSpace) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("run-log-grows-" + std::to_string(::getpid()));
+  RunLog log(path);
+  const std::string progress(99, 'p');
+  for (int i = 0; i < 3000; ++i) log.line(progress);  // 300 KB, past the first 64 KiB
+  log.commit();
+  EXPECT_EQ(std::filesystem::file_size(path), 300000U);
+  std::filesystem::remove(path);
+}
+
 TEST(RunLog, AFailureTooLongForTheRoomLeftIsShortenedNotLost) {
   SmallTmpfs disk(512 * 1024);
   if (!disk.why_not().empty()) GTEST_SKIP() << disk.why_not();
