@@ -137,15 +137,17 @@ TEST(CommandLine, ARunDirectoryHoldingAnEarlierRunIsReplacedOnlyWhenAsked) {
             std::string::npos);
 }
 
-// A disk that fills up at summary.json: the run fails, and run.log (when it could be written at
-// all) says so instead of ending like a finished run's.
+// A disk that fills up at summary.json: the run fails, and run.log (its room reserved at the
+// start) says why instead of ending like a finished run's. Every other point the disk can fill at
+// is in disk_full_test.cpp.
 TEST(CommandLine, ADiskFullAtTheSummaryLeavesNoLogSayingFinished) {
   TempDir dir;
   const auto mount_point = dir.path() / "tiny";
   std::filesystem::create_directories(mount_point);
-  // Two pages: the resolved scenario takes one, summary.json would take the other.
+  // 17 pages: run.log's reserved room takes 16, the resolved scenario one, none is left for
+  // summary.json.
   if (std::system(
-          ("mount -t tmpfs -o size=8k tmpfs " + mount_point.string() + " 2>/dev/null").c_str()) !=
+          ("mount -t tmpfs -o size=68k tmpfs " + mount_point.string() + " 2>/dev/null").c_str()) !=
       0) {
     GTEST_SKIP() << "cannot mount a small tmpfs here (needs root): the disk-full case is untested";
   }
@@ -160,6 +162,10 @@ TEST(CommandLine, ADiskFullAtTheSummaryLeavesNoLogSayingFinished) {
   EXPECT_NE(result.output.find("No space left on device"), std::string::npos) << result.output;
   EXPECT_FALSE(has_summary);
   EXPECT_EQ(log.find("finished:"), std::string::npos) << log;
+  EXPECT_TRUE(log.ends_with("run failed: cannot write " +
+                            (mount_point / "run" / "summary.json").string() +
+                            ": No space left on device\n"))
+      << log;
 }
 
 }  // namespace

@@ -152,6 +152,13 @@ void expect_killed_network_half_reported(const std::string& scenario,
       std::string::npos)
       << out;
   expect_nothing_left(dir, run.pid());
+  // The robot half's log says it too: the reason stays with the run directory.
+  const std::string log = read_file(dir.path() / "run" / "run.log");
+  EXPECT_NE(log.find("\nrun failed: "), std::string::npos) << log;
+  EXPECT_NE(
+      log.find("the network half (pid " + std::to_string(network) + ") was killed by signal 9"),
+      std::string::npos)
+      << log;
 }
 
 TEST(PeerFailure, KilledNetworkHalfEndsTheRunWithItsCause) {
@@ -174,6 +181,26 @@ TEST(PeerFailure, KilledRobotHalfTakesTheNetworkHalfDown) {
   ASSERT_NE(run.wait_exit(kStopBound), -1);
   EXPECT_TRUE(wait_gone(network, kStopBound)) << "the network half outlived the robot half";
   EXPECT_TRUE(segments_of(run.pid()).empty());
+}
+
+// A robot half killed outright cannot end its log, but what it wrote as it went is on disk:
+// run.log.partial-PID names the scenario, the seed and the transport, and how far the run got.
+TEST(PeerFailure, KilledRobotHalfLeavesALogOfHowFarItGot) {
+  TempDir dir;
+  BackgroundRun run(dir, {});
+  ASSERT_GT(run.network_half(), 0) << run.output();
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // the first progress line: 1 s
+  ASSERT_EQ(::kill(run.pid(), SIGKILL), 0);
+  ASSERT_NE(run.wait_exit(kStopBound), -1);
+  const auto partial = dir.path() / "run" / ("run.log.partial-" + std::to_string(run.pid()));
+  ASSERT_TRUE(std::filesystem::exists(partial)) << run.output();
+  const std::string log = read_file(partial);
+  EXPECT_TRUE(log.starts_with("SwarmNet run of scenario 'quickstart' from ")) << log;
+  EXPECT_NE(log.find("\nseed "), std::string::npos) << log;
+  EXPECT_NE(log.find("\ntransport: shared-memory rings"), std::string::npos) << log;
+  EXPECT_NE(log.find("\nat step "), std::string::npos) << log;
+  EXPECT_EQ(log.find('\0'), std::string::npos) << "the reserved room shows as zeros";
+  EXPECT_TRUE(log.ends_with("\n")) << log;
 }
 
 TEST(PeerFailure, HungNetworkHalfIsDetectedByTheStepTimeout) {

@@ -88,8 +88,14 @@ void serve(NetworkRun& run, const NetworkSetup& setup, StepChannel& channel) {
     if (!sent.ok()) throw RunError(sent.error);
   }
   simulator.finish();
-  if (run.trace) run.trace->commit();
-  if (run.frames) run.frames->commit();
+  for (std::optional<AtomicFile>* file : {&run.trace, &run.frames}) {
+    if (!*file) continue;
+    if (setup.traces == TraceCommit::by_robot_half) {
+      (*file)->hand_over();
+    } else {
+      (*file)->commit();
+    }
+  }
 
   NetworkReport report = simulator.report();
   const double total_cpu = thread_cpu_seconds() - run.cpu_start;

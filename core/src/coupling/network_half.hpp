@@ -15,6 +15,13 @@
 
 namespace swarmnet {
 
+// Who renames the network half's traces (packets.csv, frames.csv) to their final names.
+enum class TraceCommit : std::uint8_t {
+  here,           // the network half, before it sends its report (a server's own directory)
+  by_robot_half,  // the robot half, with the run's other outputs once the whole run succeeded;
+                  // the network half leaves them finished and synced under NAME.partial-PID
+};
+
 // What the network half simulates and where it writes, decided from the robot half's hello: the
 // scenario it validated, with the loader that resolved its plugins (used again to create them).
 // A network half in its own process made that loader and owns it (`own_loader`); one in a thread
@@ -32,6 +39,9 @@ struct NetworkSetup {
   // 4.0 GiB (--max-memory)"; empty: the host's memory).
   std::uint64_t step_payload_limit = 0;
   std::string memory_limit;
+  // A child or a thread writes into the robot half's own run directory, whose outputs the robot
+  // half commits together; a server commits its traces in the directory it named itself.
+  TraceCommit traces = TraceCommit::by_robot_half;
 };
 
 // What a network half simulating `scenario` says in its welcome.
@@ -39,9 +49,10 @@ Welcome welcome_for(const Scenario& scenario);
 
 // Answers the handshake: reads the hello, decides the setup, builds the network engine (its
 // fixed cost: a scenario that does not fit is refused here), then sends the welcome, or a
-// failure with the reason. Then serves steps until the robot half sends finish, commits the
-// packet and frame traces into the run directory (when the scenario asks for them) and sends the
-// report. On any error it tells the robot half why (a failure record), closes the channel and
+// failure with the reason. Then serves steps until the robot half sends finish, finishes the
+// packet and frame traces in the run directory (when the scenario asks for them), committing them
+// or not as NetworkSetup::traces says (a failed write is an error of the run, with the system's
+// reason), and sends the report. On any error it tells the robot half why (a failure record), closes the channel and
 // throws RunError. `welcomed`, when given, is set once the welcome is sent (the run began).
 void serve_network_connection(StepChannel& channel,
                               const std::function<NetworkSetup(const Hello&)>& setup,

@@ -9,11 +9,13 @@
 #include "coupling/network_half.hpp"
 #include "coupling/peer_authentication.hpp"
 #include "coupling/peer_cpu.hpp"
+#include "coupling/socket_directory.hpp"
 #include "coupling/stop_signal.hpp"
 #include "inproc_channel.hpp"
 #include "outputs/run_error.hpp"
 #include "protocol/step_channel.hpp"
 #include "ring_transport.hpp"
+#include "scenario/shown_value.hpp"
 #include "shm_segment.hpp"
 #include "socket_transport.hpp"
 #include "transport_error.hpp"
@@ -95,6 +97,7 @@ class InprocLink final : public NetworkLink {
   [[nodiscard]] std::string describe() const override {
     return "in-process rings, " + mib(channel_.ring_bytes()) + " each way";
   }
+  [[nodiscard]] pid_t local_network_pid() const override { return ::getpid(); }
   std::string finish() override {
     thread_.join();
     return error_;
@@ -138,6 +141,7 @@ class ChildLink final : public NetworkLink {
   [[nodiscard]] std::string describe() const override {
     return description_ + ", network half pid " + std::to_string(child_->pid());
   }
+  [[nodiscard]] pid_t local_network_pid() const override { return child_->pid(); }
   void connected() override {
     if (segment_) segment_->remove_name();
   }
@@ -161,6 +165,7 @@ class RemoteLink final : public NetworkLink {
       : transport_(std::move(transport)), description_(std::move(description)) {}
   Transport& transport() override { return *transport_; }
   [[nodiscard]] std::string describe() const override { return description_; }
+  [[nodiscard]] pid_t local_network_pid() const override { return 0; }
   std::string finish() override { return ""; }
 
  private:
@@ -194,26 +199,6 @@ std::vector<std::string> child_arguments(const LinkOptions& options, const std::
           std::to_string(options.step_timeout.count())};
 }
 
-// A private directory for the Unix socket: mode 0700, removed when the object goes.
-class PrivateDirectory {
- public:
-  PrivateDirectory() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "swarmnet-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr) throw RunError("cannot create a directory in /tmp");
-    path_ = pattern;
-  }
-  ~PrivateDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  PrivateDirectory(const PrivateDirectory&) = delete;
-  PrivateDirectory& operator=(const PrivateDirectory&) = delete;
-  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
 // A socket child learns this run's one-time secret from its environment, which only this user
 // can read; whoever connects must prove it knows it (another local user could connect first).
 std::vector<std::string> child_environment(const PeerSecret& secret) {
@@ -239,7 +224,7 @@ std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario, PluginL
   if (!options.remote.empty()) {
     const std::string prefix = "tcp://";
     if (!options.remote.starts_with(prefix)) {
-      throw RunError("--net takes tcp://HOST:PORT, not '" + options.remote + "'");
+      throw RunError("--net takes tcp://HOST:PORT, not '" + shown_value(options.remote) + "'");
     }
     const auto [host, port] = split_host_port(options.remote.substr(prefix.size()));
     const std::filesystem::path token = token_file_from(options.token_file);
@@ -272,7 +257,7 @@ std::unique_ptr<NetworkLink> open_network_link(const Scenario& scenario, PluginL
                                          description);
     }
     case TransportKind::uds: {
-      PrivateDirectory directory;
+      SocketDirectory directory;
       const std::string path = (directory.path() / "network.sock").string();
       const int listener = listen_unix(path);
       const PeerSecret secret = PeerSecret::random();

@@ -7,6 +7,8 @@
 // Every kind carries the same records, so every kind gives the same results.
 #pragma once
 
+#include <sys/types.h>
+
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -44,6 +46,10 @@ class NetworkLink {
 
   virtual Transport& transport() = 0;
   [[nodiscard]] virtual std::string describe() const = 0;
+  // The process of a network half that writes its traces into this run's directory and leaves
+  // them, finished under NAME.partial-PID, for this half to commit with the run's other outputs:
+  // a child's pid, this process's for a thread; 0 for a remote one (it commits on its own host).
+  [[nodiscard]] virtual pid_t local_network_pid() const = 0;
   // The handshake succeeded: nothing more needs a name on the file system.
   virtual void connected() {}
   // After the robot half closed its end: waits a short while for the network half to stop (then

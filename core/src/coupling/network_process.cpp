@@ -187,6 +187,7 @@ NetworkSetup remote_setup(const Hello& hello, const NetworkProcessOptions& optio
     NetworkSetup setup{std::move(scenario), next_run_dir(out), resolved, std::move(loader)};
     setup.scenario.output.dir = setup.run_dir;
     setup.stops_on_signal = true;
+    setup.traces = TraceCommit::here;
     setup.step_payload_limit = options.max_memory / 4;
     setup.memory_limit =
         "the server's memory budget of " + describe_bytes(options.max_memory) + " (--max-memory)";

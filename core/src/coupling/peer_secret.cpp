@@ -23,13 +23,39 @@ constexpr std::size_t kMaxSecretBytes = 4096;
 
 PeerSecret PeerSecret::from_file(const std::filesystem::path& path) {
   const std::string where = "token file " + path.string();
-  // Opened once and checked through the descriptor, so the file checked is the file read.
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-  if (fd < 0) throw RunError(where + ": cannot open it: " + std::strerror(errno));
+  // Opened once and checked through the descriptor, so the file checked is the file read. Not
+  // through a symbolic link (it could be swapped between check and use), and without blocking:
+  // opening a FIFO for reading would wait for a writer forever.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    const int error = errno;
+    struct stat link {};
+    if (error == ELOOP && ::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
+      std::error_code ec;
+      const std::filesystem::path target = std::filesystem::canonical(path, ec);
+      throw RunError(where + ": is a symbolic link; a token file is not read through one (the " +
+                     "link could be pointed elsewhere); name the file itself" +
+                     (ec ? std::string() : ": " + target.string()));
+    }
+    throw RunError(where + ": cannot open it: " + std::strerror(error));
+  }
   struct stat info {};
-  if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
+  if (::fstat(fd, &info) != 0) {
+    const int error = errno;
     ::close(fd);
-    throw RunError(where + ": not a regular file");
+    throw RunError(where + ": cannot read its status: " + std::strerror(error));
+  }
+  if (!S_ISREG(info.st_mode)) {
+    ::close(fd);
+    const char* kind = S_ISFIFO(info.st_mode)   ? "a FIFO"
+                       : S_ISDIR(info.st_mode)  ? "a directory"
+                       : S_ISCHR(info.st_mode)  ? "a character device"
+                       : S_ISBLK(info.st_mode)  ? "a block device"
+                       : S_ISSOCK(info.st_mode) ? "a socket"
+                                                : "not a regular file";
+    throw RunError(where + ": is " + kind + ", not a regular file; write the token into a " +
+                   "regular file only you can read (head -c 32 /dev/urandom | base64 > FILE; " +
+                   "chmod 600 FILE) and name that");
   }
   if (info.st_uid != ::geteuid()) {
     ::close(fd);
@@ -48,9 +74,11 @@ PeerSecret PeerSecret::from_file(const std::filesystem::path& path) {
   }
   std::vector<std::byte> bytes(static_cast<std::size_t>(info.st_size));
   const ssize_t got = bytes.empty() ? 0 : ::read(fd, bytes.data(), bytes.size());
+  const int read_error = errno;
   ::close(fd);
   if (got < 0 || static_cast<std::size_t>(got) != bytes.size()) {
-    throw RunError(where + ": cannot read it");
+    throw RunError(where + ": cannot read it: " +
+                   (got < 0 ? std::strerror(read_error) : "it changed while being read"));
   }
   while (!bytes.empty()) {
     const auto last = static_cast<unsigned char>(bytes.back());

@@ -22,8 +22,8 @@ inline constexpr const char* kChildSecretVariable = "SWARMNET_NET_SECRET";
 class PeerSecret {
  public:
   // The file's bytes, trailing white space removed. Refused (RunError naming the file and the
-  // reason) unless it is a regular file owned by this user, unreadable by group and others, and
-  // holds 16 to 4096 bytes.
+  // reason and how to fix it) unless it is a regular file (not a symbolic link, FIFO or device)
+  // owned by this user, unreadable by group and others, and holds 16 to 4096 bytes.
   static PeerSecret from_file(const std::filesystem::path& path);
   // 32 bytes from the system's random source.
   static PeerSecret random();

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <numbers>
 
+#include "outputs/file_buffer.hpp"
 #include "outputs/run_error.hpp"
 
 namespace swarmnet {
@@ -55,7 +56,10 @@ void HeadingsTraceWriter::finish() {
   out_.seekp(16);
   out_.write(steps.data(), static_cast<std::streamsize>(steps.size()));
   out_.seekp(end);
-  if (!out_) throw RunError("cannot record the step count in the headings trace's header");
+  if (!out_) {
+    throw RunError("cannot record the step count in the headings trace's header: " +
+                   write_failure(out_));
+  }
 }
 
 }  // namespace swarmnet

@@ -7,6 +7,7 @@
 #include <iterator>
 #include <string>
 
+#include "outputs/file_buffer.hpp"
 #include "outputs/run_error.hpp"
 
 namespace swarmnet {
@@ -65,7 +66,10 @@ void PositionsTraceWriter::finish() {
   out_.seekp(16);
   out_.write(steps.data(), static_cast<std::streamsize>(steps.size()));
   out_.seekp(end);
-  if (!out_) throw RunError("cannot record the step count in the positions trace's header");
+  if (!out_) {
+    throw RunError("cannot record the step count in the positions trace's header: " +
+                   write_failure(out_));
+  }
 }
 
 PositionsTrace read_positions_trace(const std::filesystem::path& path) {

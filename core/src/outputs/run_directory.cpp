@@ -5,6 +5,7 @@
 
 #include "outputs/output_files.hpp"
 #include "outputs/run_error.hpp"
+#include "scenario/shown_value.hpp"
 
 namespace swarmnet {
 
@@ -52,7 +53,10 @@ std::vector<std::string> prepare_run_directory(const std::filesystem::path& dir,
     throw RunError("the run directory " + dir.string() + " is a file");
   }
   std::filesystem::create_directories(dir, ec);
-  if (ec) throw RunError("cannot create run directory " + dir.string() + ": " + ec.message());
+  if (ec) {
+    throw RunError("cannot create run directory " + shown_value(dir.string(), kShownPathChars) +
+                   ": " + ec.message());
+  }
 
   std::vector<std::string> ours;
   std::vector<std::string> others;

@@ -7,6 +7,7 @@
 #include "network/network_settings.hpp"
 #include "ns3_host/ns3_counterparts.hpp"
 #include "ns3_host/ns3_wifi_modes.hpp"
+#include "scenario/shown_value.hpp"
 
 namespace swarmnet {
 
@@ -213,7 +214,8 @@ void check_rates(KeyFacts& keys) {
     const std::string mode = keys.text(ns3 / mode_key);
     if (!mode.empty()) {
       if (!ns3_mode_known(standard, mode)) {
-        keys.refuse(ns3 / mode_key, "'" + mode + "' is no WifiMode of 802." + standard.substr(3),
+        keys.refuse(ns3 / mode_key,
+                    "'" + shown_value(mode) + "' is no WifiMode of 802." + standard.substr(3),
                     "an ns-3 mode name of the standard (docs/ns3-engine.md)");
       }
       continue;

@@ -1,5 +1,7 @@
 #include "scenario/problem_list.hpp"
 
+#include "scenario/shown_value.hpp"
+
 namespace swarmnet {
 
 void ProblemList::mark_overridden(KeyPath path, std::string origin) {
@@ -37,7 +39,7 @@ std::string ProblemList::locate(const KeyPath& path, const YAML::Mark& mark) con
 
 void ProblemList::add(const KeyPath& path, const YAML::Mark& mark, const std::string& what,
                       const std::string& expected) {
-  std::string line = locate(path, mark) + ": " + path.text() + ": " + what;
+  std::string line = locate(path, mark) + ": " + shown_value(path.text()) + ": " + what;
   if (!expected.empty()) line += "; expected " + expected;
   lines_.push_back(std::move(line));
 }

@@ -7,6 +7,7 @@
 
 #include "plugin/plugin_catalog.hpp"
 #include "scenario/nearest_name.hpp"
+#include "scenario/shown_value.hpp"
 #include "text/text_join.hpp"
 
 namespace swarmnet {
@@ -168,9 +169,10 @@ std::string quote_value(const YAML::Node& node) {
   if (node.IsMap()) return "a mapping";
   if (node.IsSequence()) return "a list";
   const YamlScalar scalar = read_scalar(node);
-  if (scalar.quoted) return "\"" + scalar.text + "\" (quoted)";
-  if (scalar.kind == YamlScalar::Kind::text) return "'" + scalar.text + "'";
-  return scalar.text;
+  const std::string text = shown_value(scalar.text);
+  if (scalar.quoted) return "\"" + text + "\" (quoted)";
+  if (scalar.kind == YamlScalar::Kind::text) return "'" + text + "'";
+  return text;
 }
 
 std::optional<ParamValue> check_scalar(const ScalarRule& rule, const YAML::Node& node,

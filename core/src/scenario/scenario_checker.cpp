@@ -5,6 +5,7 @@
 
 #include "scenario/nearest_name.hpp"
 #include "scenario/scalar_rule.hpp"
+#include "scenario/shown_value.hpp"
 #include "text/text_join.hpp"
 
 namespace swarmnet {
@@ -249,8 +250,12 @@ std::optional<YAML::Node> ScenarioChecker::check_directory(const YAML::Node& val
   dir = dir.lexically_normal();
   if (!dir.has_filename() && dir.has_parent_path()) dir = dir.parent_path();  // no trailing "/"
   if (!std::filesystem::is_directory(dir, ec)) {
+    // Where a relative value points; a value cut short would only repeat it at length.
+    const std::string resolved = text.size() <= kShownValueChars
+                                     ? " (" + shown_value(dir.string(), kShownPathChars) + ")"
+                                     : "";
     problems_.add(where.path, where.mark,
-                  "'" + text + "' (" + dir.string() + ") is not a directory", expected);
+                  "'" + shown_value(text) + "'" + resolved + " is not a directory", expected);
     return std::nullopt;
   }
   return YAML::Node(dir.string());

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "scenario/key_path.hpp"
+#include "scenario/shown_value.hpp"
 
 namespace swarmnet {
 
@@ -71,9 +72,10 @@ std::optional<OverrideProblem> apply_one(YAML::Node& root, const std::vector<std
       if (!current[part] || current[part].IsNull()) current[part] = YAML::Node(YAML::NodeType::Map);
       next.reset(current[part]);
     } else {
-      return OverrideProblem{
-          path, "is a scalar (" + current.Scalar() + "), so it has no key or index '" + part + "'",
-          "a path through mappings and lists"};
+      return OverrideProblem{path,
+                             "is a scalar (" + shown_value(current.Scalar()) +
+                                 "), so it has no key or index '" + shown_value(part) + "'",
+                             "a path through mappings and lists"};
     }
     current.reset(next);
     path = here;
@@ -89,7 +91,7 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
   for (const auto& text : overrides) {
     const std::size_t equals = text.find('=');
     const std::string key = text.substr(0, equals);
-    const std::string origin = "--set " + (key.empty() ? text : key);
+    const std::string origin = "--set " + shown_value(key.empty() ? text : key);
     // "ORIGIN: [PATH: ]WHAT; expected FORM"
     const auto report = [&](const std::string& path, const std::string& what,
                             const std::string& expected) {
@@ -99,7 +101,7 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
       problems.add_line(std::move(line));
     };
     std::string quoted = "'";
-    quoted.append(text).append("'");
+    quoted.append(shown_value(text)).append("'");
     if (equals == std::string::npos) {
       report("", quoted + " has no '='", form);
       continue;

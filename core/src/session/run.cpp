@@ -13,16 +13,19 @@
 #include "coupling/cpu_clock.hpp"
 #include "coupling/network_half.hpp"
 #include "coupling/network_link.hpp"
+#include "coupling/socket_directory.hpp"
 #include "coupling/stop_signal.hpp"
 #include "display/progress_line.hpp"
 #include "outputs/atomic_file.hpp"
 #include "outputs/headings_trace.hpp"
 #include "outputs/mobility_trace.hpp"
 #include "outputs/object_trace.hpp"
+#include "outputs/output_commit.hpp"
 #include "outputs/output_files.hpp"
 #include "outputs/positions_trace.hpp"
 #include "outputs/run_directory.hpp"
 #include "outputs/run_error.hpp"
+#include "outputs/run_log.hpp"
 #include "outputs/run_summary.hpp"
 #include "outputs/traffic_schedule.hpp"
 #include "plugin/plugin_loader.hpp"
@@ -43,30 +46,6 @@ class PeerLost : public RunError {
 // How many steps later the robot half reads a window's deliveries (DESIGN.md section 2).
 std::uint64_t delivery_lag(SyncMode mode) { return mode == SyncMode::strict ? 1 : 2; }
 
-// run.log: what was run with which plugins, and how it ended.
-class RunLog {
- public:
-  explicit RunLog(const std::filesystem::path& path) : file_(path) {}
-  void line(const std::string& text) {
-    if (committed_) {
-      // After the log was committed (a failure renaming summary.json into place): appended, so
-      // that run.log never ends like a finished run's when the run failed.
-      std::ofstream(file_.path(), std::ios::app) << text << '\n';
-      return;
-    }
-    file_.stream() << text << '\n';
-  }
-  void commit() {
-    if (committed_) return;
-    file_.commit();
-    committed_ = true;
-  }
-
- private:
-  AtomicFile file_;
-  bool committed_ = false;
-};
-
 void log_plugins(RunLog& log, const Scenario& scenario, PluginLoader& loader) {
   auto describe = [&](const PluginChoice& choice) {
     const auto library = loader.find(choice.name, choice.kind);
@@ -84,14 +63,14 @@ void log_plugins(RunLog& log, const Scenario& scenario, PluginLoader& loader) {
   describe(scenario.network.routing);
 }
 
-// Removes files that other processes left under a temporary name (AtomicFile's ".partial-PID")
-// in `dir`; this process's own (the log being written) stay.
-void remove_partial_files(const std::filesystem::path& dir) {
-  const std::string own = ".partial-" + std::to_string(::getpid());
+// Removes the files left under a temporary name (AtomicFile's ".partial-PID") in `dir`: the
+// network half's (it may have been killed) and those handed over to be committed; the log being
+// written (`log`) stays.
+void remove_partial_files(const std::filesystem::path& dir, const std::filesystem::path& log) {
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-    const std::string name = entry.path().filename().string();
-    if (is_leftover_file(name) && !name.ends_with(own)) {
+    if (is_leftover_file(entry.path().filename().string()) &&
+        entry.path().filename() != log.filename()) {
       std::filesystem::remove(entry.path(), ec);
     }
   }
@@ -118,7 +97,7 @@ struct RobotLoop {
 NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, StepChannel& channel,
                                MobilityTraceWriter* mobility, PositionsTraceWriter* positions,
                                HeadingsTraceWriter* headings, ObjectTraceWriter* objects,
-                               TrafficScheduleWriter* traffic, ProgressLine& progress,
+                               TrafficScheduleWriter* traffic, ProgressLine& progress, RunLog& log,
                                RobotLoop& loop) {
   const std::uint64_t steps = scenario.step_count();
   const std::uint64_t lag = delivery_lag(scenario.sync);
@@ -164,6 +143,7 @@ NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, Step
     loop.transport_cpu_s += thread_cpu_seconds() - before;
     if (!sent.ok()) throw PeerLost(sent.error);
     progress.update(step + 1);
+    log.progress(step + 1, steps, scenario.step_s);
     loop.steps = step + 1;
     if (world.task_done()) break;
   }
@@ -183,17 +163,18 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
   outcome.dir = scenario.output.dir;
   const std::vector<std::string> notes = prepare_run_directory(outcome.dir, options.overwrite);
 
-  write_file_atomically(outcome.dir / kResolvedScenarioFile, scenario.resolved_yaml);
+  // First, with its room reserved: whatever fails after this (a full disk too), run.log says why.
   RunLog log(outcome.dir / kLogFile);
-  log.line("SwarmNet run of scenario '" + scenario.name + "' from " + scenario.source.string());
-  for (const std::string& note : notes) log.line(note);
-  log.line("seed " + std::to_string(scenario.seed) + ", " + std::to_string(scenario.robots.count) +
-           " robots, " + std::to_string(scenario.step_count()) + " steps, sync " +
-           to_string(scenario.sync));
-
   const auto wall_start = std::chrono::steady_clock::now();
   const double cpu_start = thread_cpu_seconds();
   try {
+    log.line("SwarmNet run of scenario '" + scenario.name + "' from " + scenario.source.string());
+    for (const std::string& note : notes) log.line(note);
+    log.line("seed " + std::to_string(scenario.seed) + ", " +
+             std::to_string(scenario.robots.count) + " robots, " +
+             std::to_string(scenario.step_count()) + " steps, sync " + to_string(scenario.sync));
+    // Under its final name from the start, as run.log: both say what ran, also when it failed.
+    write_file_atomically(outcome.dir / kResolvedScenarioFile, scenario.resolved_yaml);
     log_plugins(log, scenario, loader);
     RobotWorld world(scenario.robot_settings(), loader);
 
@@ -236,6 +217,9 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
     for (const std::string& name : remove_stale_segments()) {
       log.line("removed /dev/shm/" + name + ", left behind by a run that crashed");
     }
+    for (const auto& directory : remove_stale_socket_directories()) {
+      log.line("removed " + directory.string() + ", left behind by a run that crashed");
+    }
     const auto link = open_network_link(scenario, loader, outcome.dir, options.link);
     StepChannel channel(link->transport(), "the network half");
     log.line("transport: " + link->describe());
@@ -252,7 +236,7 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
         report = drive_robot_half(scenario, world, channel, mobility ? &*mobility : nullptr,
                                   positions ? &*positions : nullptr,
                                   headings ? &*headings : nullptr, objects ? &*objects : nullptr,
-                                  traffic ? &*traffic : nullptr, progress, loop);
+                                  traffic ? &*traffic : nullptr, progress, log, loop);
       } catch (const PeerLost& error) {
         robot_error = error.what();
         lost_peer = true;
@@ -286,15 +270,32 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
     world.end_worlds();
     if (positions) positions->finish();
     if (headings) headings->finish();
-    if (mobility_file) mobility_file->commit();
-    if (positions_file) positions_file->commit();
-    if (headings_file) headings_file->commit();
-    if (objects_file) objects_file->commit();
-    if (traffic_file) traffic_file->commit();
+    // Every output is written and synced under its temporary name before any is renamed, so
+    // that a failure (a full disk) leaves none under its final name.
+    OutputCommit commit;
+    if (mobility_file) commit.add(*mobility_file);
+    if (positions_file) commit.add(*positions_file);
+    if (headings_file) commit.add(*headings_file);
+    if (objects_file) commit.add(*objects_file);
+    if (traffic_file) commit.add(*traffic_file);
+    std::optional<AtomicFile> view_file;
     if (!world.view_record().empty()) {
-      AtomicFile view_file(outcome.dir / kViewStatesFile);
-      world.view_record().write_csv(view_file.stream());
-      view_file.commit();
+      view_file.emplace(outcome.dir / kViewStatesFile);
+      world.view_record().write_csv(view_file->stream());
+      commit.add(*view_file);
+    }
+    // The network half beside this one finished its traces under its own temporary names and
+    // left their renaming to this half; a remote one commits them on its own host.
+    if (const pid_t network = link->local_network_pid(); network > 0) {
+      const std::string suffix = ".partial-" + std::to_string(network);
+      if (scenario.output.packet_trace) {
+        commit.add(outcome.dir / (std::string(kPacketTraceFile) + suffix),
+                   outcome.dir / kPacketTraceFile);
+      }
+      if (scenario.output.frame_trace) {
+        commit.add(outcome.dir / (std::string(kFrameTraceFile) + suffix),
+                   outcome.dir / kFrameTraceFile);
+      }
     }
 
     SummaryInputs summary;
@@ -318,17 +319,15 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
     const std::optional<std::string> done_by = world.done_by();
     log.line("finished: " + std::to_string(loop.steps) + " steps" +
              (done_by ? ", ended by world " + *done_by + ": its task is done" : ""));
+    commit.rename_added();
     log.commit();
-    summary_file.commit();
+    commit.add(summary_file);
+    commit.rename_added();
+    commit.keep();
   } catch (const std::exception& error) {
     // Both halves have stopped by now; a network half that was killed could not remove its own.
-    remove_partial_files(outcome.dir);
-    log.line(std::string("run failed: ") + error.what());
-    try {
-      log.commit();
-    } catch (const std::exception&) {
-      // The run's own error is the one to report.
-    }
+    remove_partial_files(outcome.dir, log.temporary());
+    log.fail(std::string("run failed: ") + error.what());
     throw;
   }
   return outcome;

@@ -26,8 +26,9 @@ struct RunOutcome {
 // Runs `scenario` to completion and writes its run directory. Plugins are created with `loader`,
 // the one that resolved them when the scenario was validated (load_scenario), so that a run
 // resolves each plugin once. Throws RunError (or the error that stopped the run) with a message
-// naming what failed; files of a failed run are not left under their final names, except
-// run.log, which then ends with the error.
+// naming what failed. Outputs reach their final names only once the whole run succeeded; a
+// failed run leaves only scenario.resolved.yaml and run.log, which then ends with the error
+// (also on a full disk: its room is reserved when the run starts).
 RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const RunOptions& options);
 
 }  // namespace swarmnet
