@@ -158,6 +158,8 @@ TEST(Ns3Engine, WhatNs3CannotRunIsRefusedBeforeTheRunWithWhereAndWhy) {
       {"network.channel.cutoff=false", "--set network.channel.cutoff", "has no ns-3 counterpart"},
       {"network.channel.far_signals=events", "--set network.channel.far_signals",
        "has no ns-3 counterpart"},
+      {"network.neighbors.enabled=true", "--set network.neighbors.enabled",
+       "is not given by the ns-3 engine yet"},
       {"network.routing.params.link_layer_feedback=false",
        "--set network.routing.params.link_layer_feedback",
        "ns-3's AODV takes layer-2 feedback whenever ARP resolved the neighbour"},

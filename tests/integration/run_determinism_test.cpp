@@ -79,6 +79,41 @@ TEST(RunDeterminism, EveryTransportGivesIdenticalBytes) {
   }
 }
 
+// Radio neighbour tables cross in the step protocol like deliveries: a controller reading them
+// (the neighbor_probe fixture, beaconing in place of cbr) sees the same tables on every
+// transport, in each sync mode.
+TEST(RunDeterminism, EveryTransportGivesIdenticalNeighborTables) {
+  // The probe alone in a folder: the fixtures' folder also holds stand-ins for real plugins.
+  TempDir plugins;
+  std::filesystem::copy_file(
+      std::filesystem::path(SWARMNET_TEST_FIXTURE_DIR) / "swarmnet_neighbor_probe.so",
+      plugins.path() / "swarmnet_neighbor_probe.so");
+  const std::string probe = " --set network.neighbors.enabled=true --set plugin_paths=[" +
+                            plugins.path().string() +
+                            "] --set 'robots.controllers.1={plugin: neighbor_probe}'";
+  for (const char* sync : {"strict", "pipelined"}) {
+    std::vector<std::string> variants;
+    for (const char* transport : {"shm", "inproc", "uds", "tcp"}) {
+      variants.push_back(probe + " --seed 3 --set sync=" + sync + " --transport " + transport);
+    }
+    expect_identical_runs(variants);
+  }
+  TempDir dir;
+  run_into(dir.path() / "run", probe + " --seed 3");
+  const auto summary = nlohmann::json::parse(read_file(dir.path() / "run" / "summary.json"));
+  const auto& seen = summary["controllers"]["neighbors"];
+  EXPECT_GT(seen["sum"].get<double>(), 0.0) << seen.dump();
+  EXPECT_GT(summary["controllers"]["neighbor_frames"]["mean"].get<double>(), 0.0);
+
+  // Without the key the network half keeps no tables, and the controller is told which to set.
+  const std::string without = probe.substr(probe.find(" --set plugin_paths"));
+  const auto refused = run_swarmnet("run " + kScenario + kSmall + without + " --quiet --out " +
+                                    (dir.path() / "refused").string());
+  EXPECT_EQ(refused.exit_code, 1) << refused.output;
+  EXPECT_NE(refused.output.find("set network.neighbors.enabled: true"), std::string::npos)
+      << refused.output;
+}
+
 TEST(RunDeterminism, AnotherSeedGivesDifferentTraces) {
   TempDir a;
   TempDir b;

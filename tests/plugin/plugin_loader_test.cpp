@@ -81,6 +81,7 @@ class RecordingRobot final : public RobotContext {
   [[nodiscard]] std::span<const double> proximity() const override { return {}; }
   [[nodiscard]] double proximity_range_m() const override { return 0.3; }
   [[nodiscard]] std::span<const ReceivedMessage> inbox() const override { return {}; }
+  [[nodiscard]] std::span<const RadioNeighbor> neighbors() const override { return {}; }
   [[nodiscard]] std::span<const double> reading(std::string_view /*name*/) const override {
     return {};
   }

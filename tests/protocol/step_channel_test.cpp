@@ -401,5 +401,56 @@ TEST_F(StepChannelBounds, AStepNumberThatSkipsOrOverflowsIsRefused) {
   }
 }
 
+// network.neighbors: each robot's table crosses with the step's result and is checked against
+// the handshake's max_neighbors like every other count.
+TEST_F(StepChannelBounds, NeighborTablesRoundTripAndAreCheckedAgainstTheHandshake) {
+  const Welcome welcome{1, 4, 100'000'000, 2};
+  robot_.fix_limits(welcome);
+  network_.fix_limits(welcome);
+  StepResult sent;
+  sent.neighbor_counts = {2, 0, 1, 0};
+  sent.neighbors = {{1, SimTime{5}, -70.0, -71.0, 20.0, 3},
+                    {3, SimTime{6}, -80.0, -79.5, 10.0, 1},
+                    {0, SimTime{7}, -60.0, -60.0, 30.0, 2}};
+  ASSERT_TRUE(network_.send_result(sent).ok());
+  StepResult got;
+  ASSERT_TRUE(robot_.receive_result(got).ok());
+  EXPECT_EQ(got.neighbor_counts, sent.neighbor_counts);
+  ASSERT_EQ(got.neighbors.size(), 3U);
+  EXPECT_EQ(got.neighbors[1].id, 3U);
+  EXPECT_EQ(got.neighbors[1].last_heard, SimTime{6});
+  EXPECT_EQ(got.neighbors[1].rssi_smoothed_dbm, -79.5);
+  EXPECT_EQ(got.neighbors[2].frames, 2U);
+
+  // More entries than the handshake allows, an entry naming the robot itself, a table for a
+  // robot outside the swarm: each refused with the bound named.
+  for (const auto& [robot, ids] :
+       {std::pair<std::uint32_t, std::vector<std::uint32_t>>{0, {1, 2, 3}},
+        std::pair<std::uint32_t, std::vector<std::uint32_t>>{1, {1}},
+        std::pair<std::uint32_t, std::vector<std::uint32_t>>{9, {1}}}) {
+    std::vector<std::byte> record =
+        encode(RecordType::neighbors, robot, static_cast<std::uint32_t>(ids.size()));
+    for (const std::uint32_t id : ids) {
+      const auto entry = encode(id, std::int64_t{1}, -70.0, -70.0, 20.0, std::uint32_t{1});
+      record.insert(record.end(), entry.begin(), entry.end());
+    }
+    ASSERT_EQ(link_.network_end().send(record), IoStatus::ok);
+    ASSERT_EQ(link_.network_end().flush(), IoStatus::ok);
+    const ProtocolResult r = robot_.receive_result(got);
+    EXPECT_EQ(r.io, IoStatus::corrupt);
+    EXPECT_NE(r.error.find("neighbour table"), std::string::npos) << r.error;
+  }
+}
+
+TEST_F(StepChannelBounds, ANeighborTableNobodyAskedForIsRefused) {
+  robot_.fix_limits(Welcome{1, 4, 100'000'000});
+  const auto record = encode(RecordType::neighbors, std::uint32_t{0}, std::uint32_t{0});
+  ASSERT_EQ(link_.network_end().send(record), IoStatus::ok);
+  ASSERT_EQ(link_.network_end().flush(), IoStatus::ok);
+  StepResult got;
+  const ProtocolResult r = robot_.receive_result(got);
+  EXPECT_NE(r.error.find("sent a neighbour table nobody asked for"), std::string::npos) << r.error;
+}
+
 }  // namespace
 }  // namespace swarmnet

@@ -18,6 +18,7 @@
 #include "swarmnet/arena.hpp"
 #include "swarmnet/ids.hpp"
 #include "swarmnet/plugin.hpp"
+#include "swarmnet/radio_neighbor.hpp"
 #include "swarmnet/units.hpp"
 #include "swarmnet/vector.hpp"
 
@@ -55,6 +56,12 @@ class RobotContext {
   [[nodiscard]] virtual std::uint16_t port() const = 0;
   // Messages delivered to this robot's port() since its previous step, in delivery order.
   [[nodiscard]] virtual std::span<const ReceivedMessage> inbox() const = 0;
+  // Radio neighbours (swarmnet/radio_neighbor.hpp): the nodes this robot's radio decoded a frame
+  // from within the scenario's window (network.neighbors.window_s) before the end of the network
+  // window whose deliveries inbox() holds, ascending by id, at most max_per_robot of them (the
+  // most recently heard). Throws std::logic_error unless the scenario sets
+  // network.neighbors.enabled: true (the network half keeps no tables otherwise).
+  [[nodiscard]] virtual std::span<const RadioNeighbor> neighbors() const = 0;
   // A reading that one of the scenario's world plugins offers this robot (swarmnet/world.hpp),
   // laid out as that plugin documents. Valid until the next call of reading() by any controller
   // (copy what you keep). Throws

@@ -29,8 +29,8 @@ namespace swarmnet {
 // plugin and the kernel share. 3: RobotContext's ports, axle and arena; Physics::object_poses and
 // Arena::objects. 4: world plugins, RobotContext's readings and requests. 5:
 // RobotContext::show_state, WorldContext::show_object and hide_object (what the viewer draws).
-// 6: Packet::protocol (ARP), RoutingContext::link_address_known.
-inline constexpr std::uint32_t kAbiVersion = 6;
+// 6: Packet::protocol (ARP), RoutingContext::link_address_known. 7: RobotContext::neighbors.
+inline constexpr std::uint32_t kAbiVersion = 7;
 
 enum class PluginKind : std::uint8_t { physics, propagation, mac, routing, controller, world };
 

@@ -114,7 +114,9 @@ void serve(NetworkRun& run, const NetworkSetup& setup, StepChannel& channel) {
 }  // namespace
 
 Welcome welcome_for(const Scenario& scenario) {
-  return Welcome{scenario.seed, scenario.robots.count, from_seconds(scenario.step_s).count()};
+  const NeighborSensing& neighbors = scenario.network.neighbors;
+  return Welcome{scenario.seed, scenario.robots.count, from_seconds(scenario.step_s).count(),
+                 neighbors.enabled ? neighbors.max_per_robot : 0};
 }
 
 void serve_network_connection(StepChannel& channel,

@@ -52,8 +52,9 @@ Welcome welcome_for(const Scenario& scenario);
 // failure with the reason. Then serves steps until the robot half sends finish, finishes the
 // packet and frame traces in the run directory (when the scenario asks for them), committing them
 // or not as NetworkSetup::traces says (a failed write is an error of the run, with the system's
-// reason), and sends the report. On any error it tells the robot half why (a failure record), closes the channel and
-// throws RunError. `welcomed`, when given, is set once the welcome is sent (the run began).
+// reason), and sends the report. On any error it tells the robot half why (a failure record),
+// closes the channel and throws RunError. `welcomed`, when given, is set once the welcome is sent
+// (the run began).
 void serve_network_connection(StepChannel& channel,
                               const std::function<NetworkSetup(const Hello&)>& setup,
                               bool* welcomed = nullptr);

@@ -83,6 +83,15 @@ struct ChannelConfig {
   bool lazy_far_signals = true;
 };
 
+// network.neighbors: per-robot tables of the nodes each radio decoded frames from
+// (swarmnet/radio_neighbor.hpp). Off, the network half keeps none and sends none (cost zero).
+struct NeighborSensing {
+  bool enabled = false;
+  double window_s = 1.0;             // a node not heard for this long leaves the table
+  std::uint32_t max_per_robot = 32;  // the most recently heard are kept
+  double rssi_smoothing = 0.25;      // weight of a new frame in the smoothed RSSI (0, 1]
+};
+
 // The layers of every node, as the scenario's `network:` section chose them.
 struct NetworkConfig {
   std::vector<PluginChoice> propagation;  // applied in order
@@ -93,6 +102,7 @@ struct NetworkConfig {
   // network.arp: ns3 runs ARP with these timings (network/arp.hpp); static (nullopt) fills every
   // neighbour's address before the run and sends no ARP frame.
   std::optional<ArpTimings> arp = ArpTimings{};
+  NeighborSensing neighbors;
   NetworkEngineKind engine = NetworkEngineKind::native;
   Ns3Options ns3;
   // network.seed: the network half's own streams (MAC, PHY draws, ARP, routing, fading); absent,

@@ -42,6 +42,9 @@ NetworkSimulator::NetworkSimulator(const NetworkSettings& settings, PluginLoader
       frames_(frame_trace),
       channel_(settings, PropagationChain(settings, loader), scheduler_, settings.nodes),
       application_(settings.nodes, metrics_, trace_, packet_uids_) {
+  if (settings.network.neighbors.enabled) {
+    neighbors_.emplace(settings.nodes, settings.network.neighbors);
+  }
   const NodeServices services{scheduler_,
                               channel_,
                               application_,
@@ -50,7 +53,8 @@ NetworkSimulator::NetworkSimulator(const NetworkSettings& settings, PluginLoader
                               metrics_,
                               packet_uids_,
                               derive_seed(settings.seed, {hash_name("phy")}),
-                              derive_seed(settings.seed, {hash_name("arp")})};
+                              derive_seed(settings.seed, {hash_name("arp")}),
+                              neighbors_ ? &*neighbors_ : nullptr};
   PluginChoice mac = settings.network.mac;
   PluginChoice routing = settings.network.routing;
   mac.kind = PluginKind::mac;  // the seed keys name the kind, whatever the struct was filled with
@@ -117,6 +121,7 @@ void NetworkSimulator::run_step(const StepBatch& batch, StepResult& result) {
                            });
   }
   events += scheduler_.run_until(batch.start + step_);
+  if (neighbors_) neighbors_->collect(scheduler_.now(), result.neighbor_counts, result.neighbors);
 
   trace_.flush();
   frames_.flush();

@@ -12,12 +12,14 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <vector>
 
 #include "network/application_layer.hpp"
 #include "network/channel.hpp"
 #include "network/frame_trace.hpp"
+#include "network/neighbor_tables.hpp"
 #include "network/network_engine.hpp"
 #include "network/network_metrics.hpp"
 #include "network/network_settings.hpp"
@@ -85,6 +87,7 @@ class NetworkSimulator final : public NetworkEngine {
   PacketUidSource packet_uids_;
   Channel channel_;
   ApplicationLayer application_;
+  std::optional<NeighborTables> neighbors_;  // network.neighbors.enabled
   std::vector<std::unique_ptr<Node>> nodes_;
 };
 

@@ -23,6 +23,7 @@
 #include "network/arp.hpp"
 #include "network/channel.hpp"
 #include "network/frame_trace.hpp"
+#include "network/neighbor_tables.hpp"
 #include "network/network_metrics.hpp"
 #include "network/packet_trace.hpp"
 #include "network/packet_uid_source.hpp"
@@ -43,8 +44,9 @@ struct NodeServices {
   FrameTraceWriter& frames;
   NetworkMetrics& metrics;
   PacketUidSource& packet_uids;
-  std::uint64_t phy_seed = 0;  // node i's PHY draws from derive_seed(phy_seed, {i})
-  std::uint64_t arp_seed = 0;  // node i's ARP jitter draws from derive_seed(arp_seed, {i})
+  std::uint64_t phy_seed = 0;           // node i's PHY draws from derive_seed(phy_seed, {i})
+  std::uint64_t arp_seed = 0;           // node i's ARP jitter draws from derive_seed(arp_seed, {i})
+  NeighborTables* neighbors = nullptr;  // network.neighbors: told of every decoded frame
 };
 
 class Node final : private PhyListener {
@@ -133,6 +135,9 @@ class Node final : private PhyListener {
   // PhyListener: the PHY's events go to the MAC.
   void phy_transmit_end() override { mac_->on_transmit_end(); }
   void phy_receive(const Frame& frame, const RxInfo& info) override {
+    if (services_.neighbors != nullptr) {
+      services_.neighbors->heard(id_, frame, info, services_.scheduler.now());
+    }
     mac_->on_receive(frame, info);
   }
   void phy_receive_error() override { mac_->on_receive_error(); }

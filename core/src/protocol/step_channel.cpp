@@ -37,6 +37,8 @@ const char* to_string(RecordType type) {
       return "report";
     case RecordType::failure:
       return "failure";
+    case RecordType::neighbors:
+      return "neighbors";
     case RecordType::hello:
       return "hello";
     case RecordType::welcome:
@@ -81,6 +83,67 @@ ProtocolResult StepChannel::send_positions(const StepBatch& batch, std::uint32_t
   return sent("positions", status, false);
 }
 
+// id, last_heard, rssi, smoothed rssi, sinr, frames.
+constexpr std::size_t kNeighborBytes = 4 + 8 + 8 + 8 + 8 + 4;
+
+ProtocolResult StepChannel::send_neighbors(RobotId robot, std::span<const RadioNeighbor> table) {
+  const RecordType type = RecordType::neighbors;
+  const auto count = static_cast<std::uint32_t>(table.size());
+  std::span<std::byte> space;
+  IoStatus status = transport_.reserve(encoded_bytes(type) + encoded_bytes(robot) +
+                                           encoded_bytes(count) + table.size() * kNeighborBytes,
+                                       space);
+  if (status == IoStatus::ok) {
+    RecordWriter writer(space);
+    writer.put(type).put(robot).put(count);
+    for (const RadioNeighbor& n : table) {
+      writer.put(n.id).put(n.last_heard.count()).put(n.rssi_dbm).put(n.rssi_smoothed_dbm);
+      writer.put(n.sinr_db).put(n.frames);
+    }
+    status = transport_.commit();
+  }
+  return sent("neighbors", status, false);
+}
+
+ProtocolResult StepChannel::receive_neighbors(RecordReader& reader, StepResult& result,
+                                              std::int64_t& last_robot) {
+  std::uint32_t robot = 0;
+  std::uint32_t count = 0;
+  if (limits_.max_neighbors == 0) return over_limit("sent a neighbour table nobody asked for");
+  if (!reader.get(robot) || !reader.get(count) ||
+      reader.remaining() != std::size_t{count} * kNeighborBytes) {
+    return malformed(RecordType::neighbors);
+  }
+  if (robot >= limits_.robots || static_cast<std::int64_t>(robot) <= last_robot || count == 0 ||
+      count > limits_.max_neighbors) {
+    return over_limit("sent a neighbour table of " + std::to_string(count) + " entries for robot " +
+                      std::to_string(robot) + " (tables come once per robot, in order, with 1 to " +
+                      std::to_string(limits_.max_neighbors) + " entries)");
+  }
+  last_robot = robot;
+  result.neighbor_counts[robot] = count;
+  std::int64_t last_id = -1;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    RadioNeighbor n;
+    std::int64_t heard = 0;
+    (void)reader.get(n.id);  // the length check above guarantees every field
+    (void)reader.get(heard);
+    (void)reader.get(n.rssi_dbm);
+    (void)reader.get(n.rssi_smoothed_dbm);
+    (void)reader.get(n.sinr_db);
+    (void)reader.get(n.frames);
+    if (n.id >= limits_.robots || static_cast<std::int64_t>(n.id) <= last_id || n.id == robot) {
+      return over_limit("sent a neighbour table for robot " + std::to_string(robot) +
+                        " naming node " + std::to_string(n.id) +
+                        " (entries name other robots, ascending)");
+    }
+    last_id = n.id;
+    n.last_heard = SimTime{heard};
+    result.neighbors.push_back(n);
+  }
+  return {};
+}
+
 ProtocolResult StepChannel::sent(const char* what, IoStatus status, bool last_of_batch) {
   if (status == IoStatus::ok && last_of_batch) status = transport_.flush();
   if (status == IoStatus::ok) return {};
@@ -98,7 +161,7 @@ ProtocolResult StepChannel::receive(RecordType& type, RecordReader*& reader) {
   }
   reader_.emplace(in_);
   std::uint32_t raw = 0;
-  if (!reader_->get(raw) || raw < 1 || raw > static_cast<std::uint32_t>(RecordType::welcome)) {
+  if (!reader_->get(raw) || raw < 1 || raw > static_cast<std::uint32_t>(RecordType::neighbors)) {
     return {IoStatus::corrupt,
             "malformed record from " + peer_ + ": unknown record type " + std::to_string(raw)};
   }
@@ -160,7 +223,7 @@ ProtocolResult StepChannel::send_welcome(const Welcome& welcome) {
   }
   fix_limits(welcome);
   return send_record("welcome", true, RecordType::welcome, kStepProtocolVersion, welcome.seed,
-                     welcome.robots, welcome.step_ns);
+                     welcome.robots, welcome.step_ns, welcome.max_neighbors);
 }
 
 ProtocolResult StepChannel::receive_welcome(const Welcome& expected) {
@@ -178,17 +241,22 @@ ProtocolResult StepChannel::receive_welcome(const Welcome& expected) {
                                    std::to_string(kStepProtocolVersion)};
   }
   if (!reader->get(echo.seed) || !reader->get(echo.robots) || !reader->get(echo.step_ns) ||
-      !reader->at_end()) {
+      !reader->get(echo.max_neighbors) || !reader->at_end()) {
     return malformed(type);
   }
   if (echo.seed != expected.seed || echo.robots != expected.robots ||
-      echo.step_ns != expected.step_ns) {
+      echo.step_ns != expected.step_ns || echo.max_neighbors != expected.max_neighbors) {
     return {IoStatus::corrupt,
             "handshake mismatch: " + peer_ + " would simulate " + std::to_string(echo.robots) +
                 " robots, seed " + std::to_string(echo.seed) + ", step " +
                 std::to_string(echo.step_ns) + " ns; asked for " + std::to_string(expected.robots) +
                 ", " + std::to_string(expected.seed) + ", " + std::to_string(expected.step_ns) +
-                " ns"};
+                " ns" +
+                (echo.max_neighbors != expected.max_neighbors
+                     ? "; neighbour tables of " + std::to_string(echo.max_neighbors) +
+                           " entries where " + std::to_string(expected.max_neighbors) +
+                           " were asked for"
+                     : "")};
   }
   fix_limits(expected);
   return {};
@@ -198,6 +266,7 @@ void StepChannel::fix_limits(const Welcome& welcome) {
   limits_.robots = welcome.robots;
   limits_.max_messages_per_step = std::uint64_t{welcome.robots} * kMaxMessagesPerRobotStep;
   limits_.step_ns = welcome.step_ns;
+  limits_.max_neighbors = std::min(welcome.max_neighbors, kMaxNeighborsPerRobot);
   deliveries_owed_ = 0;
   next_step_ = 0;
 }
@@ -339,6 +408,16 @@ ProtocolResult StepChannel::send_result(const StepResult& result) {
       return r;
     }
   }
+  if (!result.neighbor_counts.empty()) {
+    std::size_t first = 0;
+    for (RobotId robot = 0; robot < result.neighbor_counts.size(); ++robot) {
+      const std::uint32_t count = result.neighbor_counts[robot];
+      if (count == 0) continue;
+      const std::span<const RadioNeighbor> table(result.neighbors.data() + first, count);
+      first += count;
+      if (auto r = send_neighbors(robot, table); !r.ok()) return r;
+    }
+  }
   return send_record("step_done", true, RecordType::step_done, result.step, result.events,
                      static_cast<std::uint32_t>(result.deliveries.size()));
 }
@@ -347,6 +426,9 @@ ProtocolResult StepChannel::receive_result(StepResult& result) {
   // Deliveries are decoded into the elements of earlier steps, reusing their payload buffers:
   // no allocation per delivery once the largest step has been seen.
   std::size_t count_so_far = 0;
+  std::int64_t last_table = -1;  // the robot whose neighbour table came last
+  result.neighbors.clear();
+  result.neighbor_counts.assign(limits_.max_neighbors == 0 ? 0 : limits_.robots, 0);
   for (;;) {
     RecordType type{};
     RecordReader* reader = nullptr;
@@ -370,7 +452,13 @@ ProtocolResult StepChannel::receive_result(StepResult& result) {
       d.delivered_at = SimTime{delivered};
       continue;
     }
-    if (type != RecordType::step_done) return unexpected(type, "delivery or step_done");
+    if (type == RecordType::neighbors) {
+      if (auto r = receive_neighbors(*reader, result, last_table); !r.ok()) return r;
+      continue;
+    }
+    if (type != RecordType::step_done) {
+      return unexpected(type, "delivery, neighbors or step_done");
+    }
     result.deliveries.resize(count_so_far);
     std::uint32_t count = 0;
     if (!reader->get(result.step) || !reader->get(result.events) || !reader->get(count) ||

@@ -2,7 +2,9 @@
 //
 // Robot half -> network half, per step: step_begin, positions (in chunks), one message record
 // per application message, step_end. At the end: finish.
-// Network half -> robot half, per step: one delivery record per delivery, step_done. After
+// Network half -> robot half, per step: one delivery record per delivery, with
+// network.neighbors one neighbors record per robot whose table is not empty (ascending robot),
+// step_done. After
 // finish: report (the network's metrics, a NetworkReport).
 // Either side may send failure (a text) before it stops, so the other can say why.
 #pragma once
@@ -33,6 +35,7 @@ enum class RecordType : std::uint32_t {
   failure = 9,
   hello = 10,
   welcome = 11,
+  neighbors = 12,  // the last: StepChannel::receive refuses any type beyond it
 };
 
 // What the handshake fixes, so that every count a peer announces later is checked before
@@ -41,6 +44,7 @@ struct ProtocolLimits {
   std::uint32_t robots = 0;                 // positions per step, exactly
   std::uint64_t max_messages_per_step = 0;  // robots x kMaxMessagesPerRobotStep
   std::int64_t step_ns = 0;                 // step i starts at exactly i x step_ns
+  std::uint32_t max_neighbors = 0;          // entries of one robot's neighbour table; 0: none sent
 };
 
 // The largest swarm a welcome may fix (the scenario's own limit on robots.count, which
@@ -48,7 +52,8 @@ struct ProtocolLimits {
 inline constexpr std::uint32_t kMaxRobots = 100000;
 
 // Version of the records above; both halves must speak the same one.
-inline constexpr std::uint32_t kStepProtocolVersion = 4;  // 4: the report's arp counters
+// 4: the report's arp counters. 5: neighbour tables (the welcome's max_neighbors).
+inline constexpr std::uint32_t kStepProtocolVersion = 5;
 
 // The handshake (the study's Fig. 1). The robot half's hello carries exactly one description of
 // what to simulate, the resolved scenario; the network half validates it and answers with a
@@ -63,6 +68,7 @@ struct Welcome {
   std::uint64_t seed = 0;
   std::uint32_t robots = 0;
   std::int64_t step_ns = 0;
+  std::uint32_t max_neighbors = 0;  // network.neighbors.max_per_robot when enabled, else 0
 };
 
 const char* to_string(RecordType type);
@@ -129,6 +135,9 @@ class StepChannel {
   template <typename... Fields>
   ProtocolResult send_record(const char* what, bool last_of_batch, const Fields&... fields);
   ProtocolResult send_positions(const StepBatch& batch, std::uint32_t first, std::uint32_t count);
+  ProtocolResult send_neighbors(RobotId robot, std::span<const RadioNeighbor> table);
+  ProtocolResult receive_neighbors(RecordReader& reader, StepResult& result,
+                                   std::int64_t& last_robot);
   ProtocolResult sent(const char* what, IoStatus status, bool last_of_batch);
   ProtocolResult receive(RecordType& type, RecordReader*& reader);
   ProtocolResult malformed(RecordType type) const;

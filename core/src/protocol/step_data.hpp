@@ -8,6 +8,7 @@
 
 #include "swarmnet/ids.hpp"
 #include "swarmnet/packet.hpp"
+#include "swarmnet/radio_neighbor.hpp"
 #include "swarmnet/random.hpp"
 #include "swarmnet/units.hpp"
 #include "swarmnet/vector.hpp"
@@ -56,6 +57,10 @@ struct StepResult {
   std::uint64_t step = 0;
   std::vector<Delivery> deliveries;  // in delivery order
   std::uint64_t events = 0;          // discrete events processed in the window
+  // network.neighbors: robot i's table is the neighbor_counts[i] entries after those of robots
+  // 0..i-1, ascending by id, as at the window's end. Both empty when the scenario keeps none.
+  std::vector<std::uint32_t> neighbor_counts;
+  std::vector<RadioNeighbor> neighbors;
 };
 
 }  // namespace swarmnet

@@ -18,6 +18,16 @@ double clamp_speed(double speed_mps, double max_mps) {
 
 }  // namespace
 
+std::span<const RadioNeighbor> WorldRobotContext::neighbors() const {
+  if (!state_->neighbors_enabled) {
+    throw std::logic_error(
+        "neighbors(): the scenario keeps no neighbour tables (set "
+        "network.neighbors.enabled: true; docs/plugins.md)");
+  }
+  const std::size_t first = state_->neighbor_first[id_];
+  return {state_->neighbors.data() + first, state_->neighbor_first[id_ + 1] - first};
+}
+
 std::span<const double> WorldRobotContext::proximity() const {
   const std::size_t rays = state_->rays_per_robot;
   return {state_->proximity.data() + static_cast<std::size_t>(id_) * rays, rays};

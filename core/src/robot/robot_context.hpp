@@ -49,7 +49,12 @@ struct RobotWorldState {
   // switch-off asked for during a step is pending (2) until the next step begins.
   std::vector<std::uint8_t> switched_off;
   WorldPlugins* worlds = nullptr;  // answers readings and requests; owned by RobotWorld
-  ViewRecord view;                 // what controllers and worlds asked the viewer to show
+  // network.neighbors: robot r's radio neighbour table is
+  // neighbors[neighbor_first[r], neighbor_first[r + 1]); filled from the step's network result.
+  bool neighbors_enabled = false;
+  std::vector<std::size_t> neighbor_first;  // robots + 1 offsets
+  std::vector<RadioNeighbor> neighbors;
+  ViewRecord view;  // what controllers and worlds asked the viewer to show
 };
 
 // The sensors and actuators of one robot.
@@ -72,6 +77,8 @@ class WorldRobotContext final : public RobotContext {
   [[nodiscard]] std::span<const ReceivedMessage> inbox() const override {
     return state_->inboxes[id_ * state_->ports.size() + state_->current_port_index].messages();
   }
+  // Throws std::logic_error when the scenario keeps no neighbour tables.
+  [[nodiscard]] std::span<const RadioNeighbor> neighbors() const override;
   [[nodiscard]] std::span<const double> reading(std::string_view name) const override;
 
   // Clamps each speed to +/- max_speed_mps; a NaN speed counts as 0 (stopping is the safe

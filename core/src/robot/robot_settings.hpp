@@ -41,6 +41,7 @@ struct RobotSettings {
   RobotsConfig robots;
   PluginChoice physics;
   std::vector<PluginChoice> worlds;  // world plugins, run in this order (swarmnet/world.hpp)
+  bool neighbor_tables = false;      // network.neighbors.enabled: neighbors() answers
 };
 
 }  // namespace swarmnet

@@ -57,6 +57,8 @@ RobotWorld::RobotWorld(const RobotSettings& settings, PluginLoader& loader) {
   state_.ports.erase(std::unique(state_.ports.begin(), state_.ports.end()), state_.ports.end());
   for (const std::uint16_t port : entry_ports_) entry_port_indices_.push_back(port_index(port));
   state_.inboxes.resize(count * std::max<std::size_t>(state_.ports.size(), 1));
+  state_.neighbors_enabled = settings.neighbor_tables;
+  state_.neighbor_first.assign(count + 1, 0);
 
   PluginArgs physics_args;
   physics_args.params = settings.physics.params;
@@ -141,6 +143,20 @@ void RobotWorld::sense() {
     physics_->sense_proximity(state_.bodies, r, state_.proximity_range_m,
                               std::span<double>(state_.proximity.data() + r * rays, rays));
   }
+}
+
+void RobotWorld::set_neighbor_tables(std::span<const std::uint32_t> counts,
+                                     std::span<const RadioNeighbor> entries) {
+  if (!state_.neighbors_enabled) return;
+  const std::size_t robots = state_.bodies.size();
+  std::size_t total = 0;
+  for (std::size_t r = 0; r < robots; ++r) {
+    state_.neighbor_first[r] = total;
+    if (r < counts.size()) total += counts[r];
+  }
+  state_.neighbor_first[robots] = std::min(total, entries.size());
+  state_.neighbors.assign(entries.begin(), entries.begin() + static_cast<std::ptrdiff_t>(
+                                                                 state_.neighbor_first[robots]));
 }
 
 void RobotWorld::step(std::span<const Delivery> deliveries, std::vector<AppMessage>& sent) {

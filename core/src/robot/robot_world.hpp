@@ -65,6 +65,12 @@ class RobotWorld {
   // `sent`, ids ascending from a world-wide counter starting at 0.
   void step(std::span<const Delivery> deliveries, std::vector<AppMessage>& sent);
 
+  // The radio neighbour tables the next step's controllers see (StepResult's layout: `counts[r]`
+  // entries for robot r, robot after robot); empty `counts`: every table empty. Only with
+  // network.neighbors (RobotSettings::neighbor_tables).
+  void set_neighbor_tables(std::span<const std::uint32_t> counts,
+                           std::span<const RadioNeighbor> entries);
+
   // True once a world plugin said its task is done: the run ends after the step that did it.
   [[nodiscard]] bool task_done() const { return worlds_->done_by().has_value(); }
   // The world plugin whose task_done() ended the run, if one did.

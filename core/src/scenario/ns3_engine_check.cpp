@@ -193,6 +193,12 @@ void check_phy(KeyFacts& keys) {
                 "has no ns-3 counterpart (it tunes SwarmNet's own channel)",
                 "its default (lazy) with network.engine: ns3");
   }
+  if (keys.text(KeyPath({"network", "neighbors", "enabled"})) == "true") {
+    keys.refuse(KeyPath({"network", "neighbors", "enabled"}),
+                "is not given by the ns-3 engine yet (neighbour tables come from SwarmNet's own "
+                "PHY)",
+                "false with network.engine: ns3, or network.engine: native");
+  }
 }
 
 // The MAC's rates must be modes of the standard, unless a mode is named outright.

@@ -29,6 +29,7 @@ RobotSettings Scenario::robot_settings() const {
   settings.robots = robots;
   settings.physics = physics;
   settings.worlds = worlds;
+  settings.neighbor_tables = network.neighbors.enabled;
   return settings;
 }
 

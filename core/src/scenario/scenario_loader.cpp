@@ -155,6 +155,11 @@ Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>
   s.network.mac = plugin("network.mac");
   s.network.routing = plugin("network.routing");
   if (network["arp"].as<std::string>() == "static") s.network.arp.reset();
+  const YAML::Node neighbors = network["neighbors"];
+  s.network.neighbors.enabled = neighbors["enabled"].as<bool>();
+  s.network.neighbors.window_s = neighbors["window_s"].as<double>();
+  s.network.neighbors.max_per_robot = neighbors["max_per_robot"].as<std::uint32_t>();
+  s.network.neighbors.rssi_smoothing = neighbors["rssi_smoothing"].as<double>();
   if (network["seed"]) s.network.seed = network["seed"].as<std::uint64_t>();
   s.network.engine = network["engine"].as<std::string>() == "ns3" ? NetworkEngineKind::ns3
                                                                   : NetworkEngineKind::native;

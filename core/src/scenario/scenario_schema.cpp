@@ -244,6 +244,20 @@ const KeySpec& scenario_schema() {
                    "events.")
             .defaults("lazy"),
       }),
+      map_key("neighbors", "Radio neighbour tables for controllers (RobotContext::neighbors(), "
+                           "docs/plugins.md): each robot's table lists the nodes its PHY decoded "
+                           "frames from lately, with RSSI, SINR and frame counts, returned with "
+                           "the step's deliveries.", {
+        boolean_key("enabled", "Keep and send the tables (off: no cost, and neighbors() "
+                               "refuses).").defaults("false"),
+        real_key("window_s", "s", "A node not heard for this long leaves the table; frames are "
+                                  "counted over it.").between(0, 3600).above(0).defaults("1"),
+        integer_key("max_per_robot", "Neighbours a table holds at most; the most recently heard "
+                                     "are kept.").between(1, 1024).defaults("32"),
+        real_key("rssi_smoothing", "", "Weight of a new frame's RSSI in the smoothed RSSI "
+                                       "(exponential smoothing; 1: the last frame only).")
+            .between(0, 1).above(0).defaults("0.25"),
+      }),
       plugin_key("mac", PluginKind::mac, "Medium access control.").plugin_default("ideal_mac"),
       plugin_key("routing", PluginKind::routing, "Routing protocol.").need(),
       choice_key("arp", {"ns3", "static"},

@@ -123,6 +123,7 @@ NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, Step
     if (step >= lag) {
       receive(step - lag);
       deliveries = &result.deliveries;
+      world.set_neighbor_tables(result.neighbor_counts, result.neighbors);
     }
     batch.step = step;
     batch.start = world.now();

@@ -46,6 +46,10 @@ class FakeRobotContext final : public RobotContext {
   double range_m = 1.0;
   std::vector<double> rays = std::vector<double>(24, 1.0);
   std::vector<ReceivedMessage> received;
+  // The radio's neighbour table, as the network half would fill it (ascending ids); with
+  // neighbors_enabled false, neighbors() refuses as the kernel does when the scenario has none.
+  std::vector<RadioNeighbor> radio_neighbors;
+  bool neighbors_enabled = true;
   // World readings by name, as a world plugin would offer them (swarmnet/world.hpp).
   std::map<std::string, std::vector<double>, std::less<>> readings;
   // Requests the world offers; when not empty, request() refuses any other name, as the kernel
@@ -72,6 +76,14 @@ class FakeRobotContext final : public RobotContext {
   [[nodiscard]] std::span<const double> proximity() const override { return rays; }
   [[nodiscard]] double proximity_range_m() const override { return range_m; }
   [[nodiscard]] std::span<const ReceivedMessage> inbox() const override { return received; }
+  [[nodiscard]] std::span<const RadioNeighbor> neighbors() const override {
+    if (!neighbors_enabled) {
+      throw std::logic_error(
+          "neighbors(): the scenario keeps no neighbour tables "
+          "(set network.neighbors.enabled: true)");
+    }
+    return radio_neighbors;
+  }
   [[nodiscard]] std::span<const double> reading(std::string_view name) const override {
     const auto it = readings.find(name);
     if (it == readings.end()) {

@@ -1,0 +1,44 @@
+// Each node's table of the nodes its PHY decoded frames from (network.neighbors), which the
+// network half returns with every step's result for RobotContext::neighbors(). Only what the
+// robot's own radio could know: a decoded frame's transmitter (data and RTS frames carry one;
+// ACK and CTS name only their receiver on the air, so they are not counted), its received power
+// and the SINR the PHY judged it at.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "network/network_settings.hpp"
+#include "swarmnet/mac.hpp"
+#include "swarmnet/packet.hpp"
+#include "swarmnet/radio_neighbor.hpp"
+
+namespace swarmnet {
+
+class NeighborTables {
+ public:
+  NeighborTables(std::uint32_t nodes, const NeighborSensing& settings);
+
+  // `receiver`'s PHY decoded `frame` at `now` (the frame's end) with `info`.
+  void heard(NodeId receiver, const Frame& frame, const RxInfo& info, SimTime now);
+
+  // The tables at `now` (a window's end): `counts[i]` entries for node i, then node i's entries
+  // in `entries`, ascending by id. A node heard last at or before now - window_s has left its
+  // table; a table holds the max_per_robot most recently heard (ties: the lower id).
+  void collect(SimTime now, std::vector<std::uint32_t>& counts,
+               std::vector<RadioNeighbor>& entries);
+
+ private:
+  struct Heard {
+    RadioNeighbor reading;
+    std::vector<SimTime> frame_ends;  // of the frames still inside the window, oldest first
+  };
+
+  SimTime window_;
+  std::uint32_t max_per_robot_;
+  double smoothing_;
+  std::vector<std::vector<Heard>> tables_;  // per receiver, ascending by transmitter id
+  std::vector<std::uint32_t> kept_;         // collect()'s scratch: indices of a table's kept
+};
+
+}  // namespace swarmnet

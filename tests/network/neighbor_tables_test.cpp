@@ -1,0 +1,137 @@
+// Radio neighbour tables (network.neighbors): against hand-fed frames, then through the
+// simulator on hand-built layouts, where they must list exactly the nodes whose frames the PHY
+// decoded.
+#include "network/neighbor_tables.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "network/network_simulator.hpp"
+#include "network_test_support.hpp"
+
+namespace swarmnet {
+namespace {
+
+SimTime ms(std::int64_t n) { return SimTime{n * 1'000'000}; }
+
+Frame frame_from(NodeId transmitter, FrameType type = FrameType::data) {
+  Frame f;
+  f.type = type;
+  f.transmitter = transmitter;
+  return f;
+}
+
+struct Tables {
+  std::vector<std::uint32_t> counts;
+  std::vector<RadioNeighbor> entries;
+};
+
+Tables collect(NeighborTables& tables, SimTime now) {
+  Tables t;
+  tables.collect(now, t.counts, t.entries);
+  return t;
+}
+
+TEST(NeighborTables, ListWhatEachNodeDecodedAscendingWithRssiSinrAndFrames) {
+  NeighborSensing settings;
+  settings.rssi_smoothing = 0.5;
+  NeighborTables tables(3, settings);
+  tables.heard(0, frame_from(2), RxInfo{-70.0, 20.0}, ms(10));
+  tables.heard(0, frame_from(1), RxInfo{-60.0, 30.0}, ms(20));
+  tables.heard(0, frame_from(2), RxInfo{-80.0, 10.0}, ms(30));
+  tables.heard(0, frame_from(1, FrameType::ack), RxInfo{-50.0, 40.0}, ms(40));  // names no sender
+  tables.heard(0, frame_from(2, FrameType::cts), RxInfo{-50.0, 40.0}, ms(40));
+  tables.heard(0, frame_from(0), RxInfo{-10.0, 90.0}, ms(40));  // its own frame
+  const Tables t = collect(tables, ms(100));
+  ASSERT_EQ(t.counts, (std::vector<std::uint32_t>{2, 0, 0}));
+  EXPECT_EQ(t.entries[0].id, 1U);
+  EXPECT_EQ(t.entries[0].frames, 1U);
+  EXPECT_EQ(t.entries[0].last_heard, ms(20));
+  EXPECT_EQ(t.entries[1].id, 2U);
+  EXPECT_EQ(t.entries[1].frames, 2U);
+  EXPECT_EQ(t.entries[1].last_heard, ms(30));
+  EXPECT_EQ(t.entries[1].rssi_dbm, -80.0);
+  EXPECT_EQ(t.entries[1].rssi_smoothed_dbm, -75.0);  // -70 + 0.5 x (-80 - -70)
+  EXPECT_EQ(t.entries[1].sinr_db, 10.0);
+}
+
+TEST(NeighborTables, ANodeSilentForTheWholeWindowAgesOutAndOldFramesStopCounting) {
+  NeighborSensing settings;
+  settings.window_s = 1.0;
+  NeighborTables tables(2, settings);
+  tables.heard(1, frame_from(0), RxInfo{-70.0, 20.0}, ms(100));
+  tables.heard(1, frame_from(0), RxInfo{-70.0, 20.0}, ms(900));
+  Tables t = collect(tables, ms(1000));
+  ASSERT_EQ(t.counts[1], 1U);
+  EXPECT_EQ(t.entries[0].frames, 2U);
+  t = collect(tables, ms(1500));  // the frame at 0.1 s has left the window
+  ASSERT_EQ(t.counts[1], 1U);
+  EXPECT_EQ(t.entries[0].frames, 1U);
+  t = collect(tables, ms(1900));  // heard last exactly a window ago: gone
+  EXPECT_EQ(t.counts[1], 0U);
+  EXPECT_TRUE(t.entries.empty());
+}
+
+TEST(NeighborTables, AFullTableKeepsTheMostRecentlyHeard) {
+  NeighborSensing settings;
+  settings.max_per_robot = 2;
+  NeighborTables tables(5, settings);
+  tables.heard(0, frame_from(4), RxInfo{-70.0, 20.0}, ms(10));
+  tables.heard(0, frame_from(3), RxInfo{-70.0, 20.0}, ms(30));
+  tables.heard(0, frame_from(1), RxInfo{-70.0, 20.0}, ms(20));
+  tables.heard(0, frame_from(2), RxInfo{-70.0, 20.0}, ms(30));  // ties with 3: the lower id first
+  const Tables t = collect(tables, ms(100));
+  ASSERT_EQ(t.counts[0], 2U);
+  EXPECT_EQ(t.entries[0].id, 2U);
+  EXPECT_EQ(t.entries[1].id, 3U);
+}
+
+// Three robots on a line 100 m apart, 120 m disk: the ends hear only the middle one.
+TEST(NetworkNeighborTables, TheSimulatorListsTheNodesWhoseFramesThePhyDecoded) {
+  PluginLoader loader;
+  NetworkSettings settings = test::make_settings(loader, 3);
+  settings.network.neighbors.enabled = true;
+  NetworkSimulator simulator(settings, loader, nullptr);
+  const std::vector<StepBatch> batches =
+      test::fixed_batches(settings, test::line_positions(3, 100.0), 3,
+                          {test::message(0, 0, kBroadcast), test::message(1, 1, kBroadcast),
+                           test::message(2, 2, kBroadcast)});
+  StepResult result;
+  simulator.run_step(batches[0], result);
+  ASSERT_EQ(result.neighbor_counts, (std::vector<std::uint32_t>{1, 2, 1}));
+  EXPECT_EQ(result.neighbors[0].id, 1U);
+  EXPECT_EQ(result.neighbors[1].id, 0U);
+  EXPECT_EQ(result.neighbors[2].id, 2U);
+  EXPECT_EQ(result.neighbors[3].id, 1U);
+  for (const RadioNeighbor& n : result.neighbors) {
+    EXPECT_GE(n.frames, 1U);
+    EXPECT_TRUE(std::isfinite(n.rssi_dbm));
+    EXPECT_GT(n.last_heard, kTimeZero);
+    EXPECT_LE(n.last_heard, from_seconds(0.1));
+  }
+  // No more traffic: a second later every table has emptied.
+  for (std::uint64_t step = 1; step < 12; ++step) {
+    StepBatch quiet;
+    quiet.step = step;
+    quiet.start = from_seconds(0.1) * static_cast<std::int64_t>(step);
+    quiet.positions = test::line_positions(3, 100.0);
+    simulator.run_step(quiet, result);
+  }
+  EXPECT_EQ(result.neighbor_counts, (std::vector<std::uint32_t>{0, 0, 0}));
+}
+
+TEST(NetworkNeighborTables, WithoutNetworkNeighborsNoTableIsKept) {
+  PluginLoader loader;
+  const NetworkSettings settings = test::make_settings(loader, 3);
+  NetworkSimulator simulator(settings, loader, nullptr);
+  StepResult result;
+  simulator.run_step(test::fixed_batches(settings, test::line_positions(3, 100.0), 1,
+                                         {test::message(0, 0, kBroadcast)})[0],
+                     result);
+  EXPECT_TRUE(result.neighbor_counts.empty());
+  EXPECT_TRUE(result.neighbors.empty());
+}
+
+}  // namespace
+}  // namespace swarmnet
