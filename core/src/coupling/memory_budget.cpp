@@ -58,7 +58,22 @@ std::uint64_t default_memory_budget() {
   return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page) / 2;
 }
 
+bool kernel_memory_limit_available() {
+#if defined(__SANITIZE_ADDRESS__)
+  return false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+  return false;
+#else
+  return true;
+#endif
+#else
+  return true;
+#endif
+}
+
 void limit_process_memory(const MemoryBudget& budget, std::uint64_t reserve) {
+  if (!kernel_memory_limit_available()) return;
   const std::uint64_t limit = data_segment_bytes() + budget.bytes + reserve;
   rlimit current{};
   ::getrlimit(RLIMIT_DATA, &current);

@@ -20,8 +20,14 @@ std::uint64_t parse_memory_size(const std::string& text);
 // Half the host's physical memory: a server that takes at most that leaves the host usable.
 std::uint64_t default_memory_budget();
 
+// Whether limit_process_memory() can work in this build: AddressSanitizer maps terabytes of
+// shadow memory and aborts the process when an allocation fails, so under it the kernel's limit
+// is not set (one step's payload bound still holds).
+bool kernel_memory_limit_available();
+
 // Sets this process's RLIMIT_DATA to what it uses now plus `budget.bytes` plus `reserve` (for
 // the server's own threads' stacks). Throws RunError with the system's reason if it cannot.
+// Does nothing where kernel_memory_limit_available() is false.
 void limit_process_memory(const MemoryBudget& budget, std::uint64_t reserve);
 
 // Bytes the heap holds for the program now (glibc's mallinfo2: in use, not free).

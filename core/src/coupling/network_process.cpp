@@ -213,7 +213,8 @@ int serve_remote(const NetworkProcessOptions& options) {
   // the budget.
   constexpr std::uint64_t kThreadStackBytes = std::uint64_t{256} << 10U;
   pthread_attr_t thread_defaults;
-  if (::pthread_attr_init(&thread_defaults) == 0) {
+  // (Under AddressSanitizer no limit is set, and its larger frames keep the default stacks.)
+  if (kernel_memory_limit_available() && ::pthread_attr_init(&thread_defaults) == 0) {
     if (::pthread_attr_setstacksize(&thread_defaults, kThreadStackBytes) == 0) {
       ::pthread_setattr_default_np(&thread_defaults);
     }
@@ -228,7 +229,9 @@ int serve_remote(const NetworkProcessOptions& options) {
       out.string() +
       (options.serve_forever ? ", until stopped"
                              : ", " + std::to_string(options.runs) + " run(s)") +
-      ", memory budget " + describe_bytes(options.max_memory));
+      ", memory budget " + describe_bytes(options.max_memory) +
+      (kernel_memory_limit_available() ? ""
+                                       : " (not enforced by the kernel under AddressSanitizer)"));
   HandshakeSettings handshakes;
   handshakes.deadline = options.handshake_timeout;
   handshakes.max_pending = options.max_pending_handshakes;
