@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 
+#include "network/scheduler.hpp"
 #include "ns3_study_settings.hpp"
 
 namespace swarmnet {
@@ -74,6 +76,36 @@ TEST(Ns3NetworkEngine, AodvDeliversABroadcastToTheNeighboursOnce) {
                           [](const Delivery& d) { return d.receiver == 1; }),
             1);
   EXPECT_EQ(engine.report().broadcast_deliveries, 1U);
+}
+
+// A server's stop check is asked inside ns-3's window, not only between steps; when it never
+// says stop, the sliced window gives exactly what the unsliced one does.
+std::atomic<int> stop_checks{0};
+TEST(Ns3NetworkEngine, AStopCheckEndsAWindowInsideItAndOtherwiseChangesNothing) {
+  const auto routing = choice("direct", PluginKind::routing, ParamSet());
+  std::vector<Delivery> plain;
+  {
+    Ns3NetworkEngine engine(line_settings(routing));
+    plain = run_steps(engine, 0, 5, {AppMessage{1, 0, 1, 0, Payload(64)}});
+  }
+  std::vector<Delivery> sliced;
+  {
+    Ns3NetworkEngine engine(line_settings(routing), [] {
+      ++stop_checks;
+      return false;
+    });
+    sliced = run_steps(engine, 0, 5, {AppMessage{1, 0, 1, 0, Payload(64)}});
+  }
+  EXPECT_GT(stop_checks.load(), 5 * 50);  // about one per simulated millisecond
+  ASSERT_EQ(sliced.size(), plain.size());
+  ASSERT_FALSE(plain.empty());
+  for (std::size_t i = 0; i < plain.size(); ++i) {
+    EXPECT_EQ(sliced[i].delivered_at, plain[i].delivered_at);
+    EXPECT_EQ(sliced[i].receiver, plain[i].receiver);
+  }
+  Ns3NetworkEngine stopped(line_settings(routing), [] { return true; });
+  StepResult result;
+  EXPECT_THROW(stopped.run_step(batch(0, {}), result), SimulationInterrupted);
 }
 
 }  // namespace

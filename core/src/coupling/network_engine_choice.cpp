@@ -11,7 +11,7 @@ std::unique_ptr<NetworkEngine> make_network_engine(const Scenario& scenario, Plu
                                                    bool (*stop_requested)()) {
   const NetworkSettings settings = scenario.network_settings();
   if (settings.network.engine == NetworkEngineKind::ns3) {
-    return std::make_unique<Ns3NetworkEngine>(settings);
+    return std::make_unique<Ns3NetworkEngine>(settings, stop_requested);
   }
   auto simulator = std::make_unique<NetworkSimulator>(settings, loader, packet_trace, frame_trace);
   simulator->set_interrupt_check(stop_requested);

@@ -14,8 +14,8 @@ namespace swarmnet {
 // SwarmNet's own simulator (writing `packet_trace` and `frame_trace` when not null), or ns-3
 // (which writes neither: the scenario check refuses output.packet_trace and output.frame_trace
 // with it). Throws what the engine's set-up throws. `stop_requested`, when given, is polled by
-// SwarmNet's own event loop inside every window (a true answer throws SimulationInterrupted);
-// ns-3's loop is not interrupted inside a window.
+// either engine inside every window (SwarmNet's every 4096 events, ns-3's every millisecond of
+// simulated time); a true answer throws SimulationInterrupted.
 [[nodiscard]] std::unique_ptr<NetworkEngine> make_network_engine(
     const Scenario& scenario, PluginLoader& loader, std::ostream* packet_trace,
     std::ostream* frame_trace = nullptr, bool (*stop_requested)() = nullptr);

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -78,6 +79,18 @@ struct Config {
   std::vector<Attribute> routing_attributes;  // on the aodv, olsr or dsdv RoutingProtocol
   FloodingParams flooding;
   Arp arp = Arp::dynamic;
+  // When set, asked every kInterruptSliceNs of simulated time inside a window: true ends the
+  // window with Interrupted (a server's run stops on SIGTERM mid-step). Stop events the slicing
+  // adds are not counted, and they change no result.
+  bool (*stop_requested)() = nullptr;
+};
+
+inline constexpr std::int64_t kInterruptSliceNs = 1'000'000;  // 1 ms of simulated time
+
+// Thrown by Network::run_window when Config::stop_requested said stop.
+class Interrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 // A robot's message, taken in by the network at `inject_ns` (inside the window it comes with).

@@ -153,7 +153,8 @@ std::int64_t assign_dsdv_streams(const ns3::NodeContainer& nodes, std::int64_t s
 
 }  // namespace
 
-Ns3Network::Ns3Network(const Config& config) : counters_(config.routing) {
+Ns3Network::Ns3Network(const Config& config)
+    : counters_(config.routing), stop_requested_(config.stop_requested) {
   if (g_network_exists.exchange(true)) {
     fail("another network exists (ns-3's simulator is one per process): delete it first");
   }
@@ -343,6 +344,17 @@ void Ns3Network::run_window(std::int64_t end_ns, const std::vector<double>& xy,
 // the drain ends with a pass that ran nothing but its own stop. Every event before end_ns has
 // then run and none at or after it; the clock rests at end_ns - 1, where nothing is left.
 void Ns3Network::run_until(std::int64_t end_ns) {
+  // With a stop check, the window runs in slices of simulated time, asking between them.
+  while (stop_requested_ != nullptr &&
+         ns3::Simulator::Now().GetNanoSeconds() + kInterruptSliceNs < end_ns - 1) {
+    if (stop_requested_()) {
+      throw Interrupted("stopped at " + std::to_string(ns3::Simulator::Now().GetNanoSeconds()) +
+                        " ns of simulated time, inside a window");
+    }
+    ns3::Simulator::Stop(ns3::NanoSeconds(kInterruptSliceNs));
+    ++stop_events_;
+    ns3::Simulator::Run();
+  }
   ns3::Simulator::Stop(ns3::NanoSeconds(end_ns - 1) - ns3::Simulator::Now());
   ++stop_events_;
   ns3::Simulator::Run();

@@ -47,8 +47,9 @@ class Ns3Network final : public Network {
   CounterSinks counters_;
   EndpointWorld world_;
   std::vector<std::unique_ptr<Endpoint>> endpoints_;
-  std::int64_t now_ns_ = 0;        // where the next window starts
-  std::uint64_t stop_events_ = 0;  // the engine's own Stop events, not counted in the report
+  std::int64_t now_ns_ = 0;             // where the next window starts
+  std::uint64_t stop_events_ = 0;       // the engine's own Stop events, not counted in the report
+  bool (*stop_requested_)() = nullptr;  // Config::stop_requested
 };
 
 }  // namespace swarmnet::ns3engine

@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "network/application_layer.hpp"
+#include "network/scheduler.hpp"
 #include "ns3_host/ns3_engine_library.hpp"
 #include "ns3_host/ns3_settings.hpp"
 
@@ -23,11 +24,21 @@ std::vector<NamedCount> named_counts(const ns3engine::Counters& counters) {
 
 }  // namespace
 
-Ns3NetworkEngine::Ns3NetworkEngine(const NetworkSettings& settings)
+namespace {
+
+ns3engine::Config config_with_stop(const NetworkSettings& settings, bool (*stop_requested)()) {
+  ns3engine::Config config = ns3_config_for(settings);
+  config.stop_requested = stop_requested;
+  return config;
+}
+
+}  // namespace
+
+Ns3NetworkEngine::Ns3NetworkEngine(const NetworkSettings& settings, bool (*stop_requested)())
     : traffic_seed_(settings.traffic_seed),
       step_(from_seconds(settings.step_s)),
       nodes_(settings.nodes),
-      network_(create_ns3_network(ns3_config_for(settings))) {}
+      network_(create_ns3_network(config_with_stop(settings, stop_requested))) {}
 
 void Ns3NetworkEngine::check_batch(const StepBatch& batch) const {
   if (batch.positions.size() != nodes_) {
@@ -85,7 +96,11 @@ void Ns3NetworkEngine::run_step(const StepBatch& batch, StepResult& result) {
   }
   const std::uint64_t events_before = network_->events();
   next_start_ = batch.start + step_;
-  network_->run_window(next_start_.count(), xy_, window_messages_, arrivals_);
+  try {
+    network_->run_window(next_start_.count(), xy_, window_messages_, arrivals_);
+  } catch (const ns3engine::Interrupted& interrupted) {
+    throw SimulationInterrupted(interrupted.what());
+  }
   // Arrivals in time order, a self-delivery before ns-3's arrivals of the same instant.
   std::stable_sort(self_arrivals_.begin(), self_arrivals_.end(),
                    [](const auto& a, const auto& b) { return a.arrived_ns < b.arrived_ns; });

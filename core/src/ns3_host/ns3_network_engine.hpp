@@ -23,7 +23,9 @@ class Ns3NetworkEngine final : public NetworkEngine {
  public:
   // Loads the module and sets ns-3 up; throws std::runtime_error (module) or
   // std::invalid_argument (settings) saying why not.
-  explicit Ns3NetworkEngine(const NetworkSettings& settings);
+  // `stop_requested`, when given, is asked every millisecond of simulated time inside a window
+  // (ns3engine::Config::stop_requested); a true answer throws SimulationInterrupted.
+  explicit Ns3NetworkEngine(const NetworkSettings& settings, bool (*stop_requested)() = nullptr);
 
   void run_step(const StepBatch& batch, StepResult& result) override;
   [[nodiscard]] NetworkReport report() const override;
