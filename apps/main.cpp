@@ -11,6 +11,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bench_command.hpp"
@@ -28,12 +29,16 @@
 #include "plugin/plugin_loader.hpp"
 #include "replay_command.hpp"
 #include "scenario/scenario_loader.hpp"
+#include "scenario/shown_value.hpp"
 #include "session/exit_codes.hpp"
 #include "session/run.hpp"
 #include "view_command.hpp"
 #include "viewer/view_page.hpp"
 
 namespace {
+
+// The longest command-line refusal printed whole (a refused value is cut beyond it).
+constexpr std::size_t kShownMessageChars = 400;
 
 using swarmnet::kExitBadInput;
 using swarmnet::kExitRunFailed;
@@ -434,6 +439,12 @@ static int run_main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
+    // CLI11 quotes a refused value whole: a 100 KB argument would bury the message.
+    if (error.get_exit_code() != 0 && std::string_view(error.what()).size() > kShownMessageChars) {
+      std::fprintf(stderr, "%s\nRun with --help for more information.\n",
+                   swarmnet::shown_value(error.what(), kShownMessageChars).c_str());
+      return kExitBadInput;
+    }
     return app.exit(error) == 0 ? 0 : kExitBadInput;
   }
   if (*run) return run_command(run_args, quiet, overwrite, run_view, transport);

@@ -23,6 +23,15 @@ TEST(CommandLine, DefaultRunPrintsItsSummary) {
   EXPECT_TRUE(std::filesystem::exists(dir.path() / "summary.json"));
 }
 
+// The argument parser quotes a refused value; a 100 KB one is cut, its length said.
+TEST(CommandLine, AHugeRefusedArgumentIsEchoedCut) {
+  const std::string huge(100000, 'x');
+  const auto result = run_swarmnet("run --transport " + huge);
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_LT(result.output.size(), 1000U) << result.output.substr(0, 2000);
+  EXPECT_NE(result.output.find("bytes)"), std::string::npos) << result.output.substr(0, 2000);
+}
+
 TEST(CommandLine, HelpNamesTheCommand) {
   for (const char* arguments : {"help", "--help"}) {
     const auto result = run_swarmnet(arguments);
