@@ -288,10 +288,11 @@ TEST(PluginLoader, DiscoverListsPluginsByKindThenNameAndReportsBrokenFiles) {
     }
   }
   EXPECT_EQ(fixtures,
-            (std::vector<std::string>{
-                "physics kinematic2d", "propagation test_propagation", "mac ideal_mac",
-                "routing busy_routing", "routing test_routing", "controller busy_controller",
-                "controller test_controller", "controller world_probe", "world test_world"}));
+            (std::vector<std::string>{"physics kinematic2d", "propagation test_propagation",
+                                      "mac ideal_mac", "routing busy_routing",
+                                      "routing test_routing", "controller busy_controller",
+                                      "controller neighbor_probe", "controller test_controller",
+                                      "controller world_probe", "world test_world"}));
 
   std::vector<std::string> broken_files;
   for (const auto& file : broken) {
