@@ -106,6 +106,28 @@ TEST(ScenarioScalarRule, DescribesRanges) {
   EXPECT_EQ(rule_for(text_param("t", "a", "", {"a", "b"})).describe(), "one of a, b");
 }
 
+// yaml-cpp stops at a NUL byte and then loops on a ',' after it (found by fuzz_peer_hello); YAML
+// allows no NUL, so one is refused where it stands.
+TEST(YamlHazard, ANulByteIsRefusedWhereItStands) {
+  using namespace std::string_literals;
+  const auto hazard = find_yaml_hazard("a: 1\nb: \0,x"s);
+  ASSERT_TRUE(hazard.has_value());
+  EXPECT_EQ(hazard->line, 1);
+  EXPECT_EQ(hazard->column, 3);
+  EXPECT_STREQ(hazard->problem, kYamlNulProblem);
+  PluginLoader loader;
+  try {
+    (void)load_scenario_text("\0,\0` \0a[w"s, "fuzz.yaml", loader);
+    FAIL() << "a text with NUL bytes was read";
+  } catch (const ScenarioError& error) {
+    EXPECT_NE(
+        std::string(error.what()).find("fuzz.yaml:1:1: YAML syntax error: the text holds a NUL"),
+        std::string::npos)
+        << error.what();
+  }
+  EXPECT_STREQ(find_yaml_hazard(",a: 1")->problem, kYamlHazardProblem);
+}
+
 TEST(ScenarioReference, DocsDescribeEveryKeyWithItsDefault) {
   const std::string docs =
       test::read_text(std::filesystem::path(SWARMNET_SOURCE_DIR) / "docs" / "scenario.md");

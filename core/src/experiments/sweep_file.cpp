@@ -273,7 +273,7 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
     if (const auto hazard = find_yaml_hazard(text)) {
       throw SweepError({name + ":" + std::to_string(hazard->line + 1) + ":" +
                         std::to_string(hazard->column + 1) +
-                        ": not valid YAML: " + kYamlHazardProblem});
+                        ": not valid YAML: " + hazard->problem});
     }
     root = YAML::Load(text);
   } catch (const YAML::ParserException& error) {

@@ -240,7 +240,7 @@ Scenario load_text(const std::string& text, const std::string& origin,
     mark.line = hazard->line;
     mark.column = hazard->column;
     throw ScenarioError(
-        {problems.locate(KeyPath{}, mark) + ": YAML syntax error: " + kYamlHazardProblem});
+        {problems.locate(KeyPath{}, mark) + ": YAML syntax error: " + hazard->problem});
   }
   try {
     documents = YAML::LoadAll(text);

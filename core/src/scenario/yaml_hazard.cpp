@@ -1,5 +1,7 @@
 #include "scenario/yaml_hazard.hpp"
 
+#include <algorithm>
+
 namespace swarmnet {
 
 namespace {
@@ -59,11 +61,12 @@ class HazardScanner {
         continue;
       }
       if (node_may_begin_) {
-        if (c == ',' && flow_depth_ == 0) return TextPosition{line, static_cast<int>(at)};
+        if (c == ',' && flow_depth_ == 0)
+          return TextPosition{line, static_cast<int>(at), kYamlHazardProblem};
         if (c == '!' || c == '&' || c == '*') {  // a tag, an anchor (the node follows) or an alias
           for (; at + 1 < row.size() && !is_blank(row[at + 1]); ++at) {
             if (row[at + 1] == ',' && flow_depth_ == 0) {
-              return TextPosition{line, static_cast<int>(at + 1)};
+              return TextPosition{line, static_cast<int>(at + 1), kYamlHazardProblem};
             }
           }
           continue;
@@ -72,7 +75,7 @@ class HazardScanner {
         if (flow_depth_ == 0 && (c == '|' || c == '>')) {
           block_scalar_indent_ = indent;  // its text follows on the next lines
           for (++at; at < row.size() && row[at] != '#'; ++at) {
-            if (row[at] == ',') return TextPosition{line, static_cast<int>(at)};
+            if (row[at] == ',') return TextPosition{line, static_cast<int>(at), kYamlHazardProblem};
           }
           return std::nullopt;
         }
@@ -107,6 +110,14 @@ class HazardScanner {
 }  // namespace
 
 std::optional<TextPosition> find_yaml_hazard(std::string_view text) {
+  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+    const std::string_view before = text.substr(0, nul);
+    const std::size_t line_start = before.rfind('\n');
+    const auto line = static_cast<int>(std::count(before.begin(), before.end(), '\n'));
+    const auto column =
+        static_cast<int>(line_start == std::string_view::npos ? nul : nul - line_start - 1);
+    return TextPosition{line, column, kYamlNulProblem};
+  }
   return HazardScanner().scan(text);
 }
 

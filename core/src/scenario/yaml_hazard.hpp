@@ -13,15 +13,22 @@
 namespace swarmnet {
 
 struct TextPosition {
-  int line = 0;    // 0-based, as YAML::Mark
-  int column = 0;  // 0-based
+  int line = 0;                   // 0-based, as YAML::Mark
+  int column = 0;                 // 0-based
+  const char* problem = nullptr;  // what is wrong there, for the syntax error
 };
 
 // What is wrong with such a text, for the syntax error that refuses it.
 inline constexpr const char* kYamlHazardProblem =
     "',' cannot begin a value outside [ ] or { }, nor stand in a tag or an anchor";
 
-// Where `text` holds such a hazard, if it does.
+// A NUL byte anywhere: YAML allows none (it is not a printable character), and yaml-cpp, which
+// stops reading at one, then loops forever on a ',' after it (found by fuzzing: "\0,\0` \0a[w").
+inline constexpr const char* kYamlNulProblem =
+    "the text holds a NUL byte, which YAML does not allow (is this a binary file?)";
+
+// Where `text` holds such a hazard or a NUL byte, if it does, with the problem to report
+// (kYamlHazardProblem or kYamlNulProblem).
 std::optional<TextPosition> find_yaml_hazard(std::string_view text);
 
 }  // namespace swarmnet
