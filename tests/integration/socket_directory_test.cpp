@@ -58,13 +58,17 @@ TEST(SocketDirectory, OnlyThoseOfProcessesThatAreGoneAreRemoved) {
   EXPECT_TRUE(std::filesystem::exists(other));
 }
 
+// In a temporary directory of its own (TMPDIR): another test's uds run, in parallel, would
+// remove the stale directory first, and this run's log would have nothing to say.
 TEST(SocketDirectory, TheNextRunRemovesAKilledRunsDirectoryAndSaysSo) {
-  const auto stale = leave_directory(std::filesystem::temp_directory_path(), dead_pid());
+  TempDir temporary;
+  const auto stale = leave_directory(temporary.path(), dead_pid());
   TempDir dir;
   const CommandResult result =
       run_swarmnet("run " SWARMNET_SOURCE_DIR
                    "/configs/quickstart.yaml --quiet --transport uds --set duration_s=0.5 --out " +
-                   (dir.path() / "run").string());
+                       (dir.path() / "run").string(),
+                   "TMPDIR=" + temporary.path().string());
   EXPECT_EQ(result.exit_code, 0) << result.output;
   EXPECT_FALSE(std::filesystem::exists(stale));
   const std::string log = read_file(dir.path() / "run" / "run.log");
