@@ -265,10 +265,13 @@ static int run_main(int argc, char** argv) {
                   "the oldest pending one from the busiest address")
       ->check(CLI::Range(1U, 4096U))
       ->capture_default_str();
-  std::string net_max_memory;
-  net->add_option("--max-memory", net_max_memory,
-                  "with --listen: memory the runs served may take, e.g. 4G (default: half the "
-                  "host's physical memory); a scenario that needs more is refused");
+  auto* net_max_memory =
+      net->add_option("--max-memory", net_options.max_memory,
+                      "with --listen: memory the runs served may take, e.g. 4G or 512MiB (binary "
+                      "units; default: half the host's physical memory); a scenario that needs "
+                      "more is refused")
+          ->transform(CLI::AsSizeValue(false))
+          ->check(CLI::Range(std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max()));
 
   ScenarioArguments validate_args;
   auto* validate = app.add_subcommand("validate", "check a scenario without running it");
@@ -455,13 +458,7 @@ static int run_main(int argc, char** argv) {
     net_options.step_timeout = std::chrono::milliseconds(std::llround(net_timeout_ms));
     net_options.out = net_out;
     net_options.plugin_paths.assign(net_plugin_paths.begin(), net_plugin_paths.end());
-    try {
-      net_options.max_memory = net_max_memory.empty() ? swarmnet::default_memory_budget()
-                                                      : swarmnet::parse_memory_size(net_max_memory);
-    } catch (const std::invalid_argument& error) {
-      std::fprintf(stderr, "swarmnet net: --max-memory: %s\n", error.what());
-      return kExitBadInput;
-    }
+    if (net_max_memory->count() == 0) net_options.max_memory = swarmnet::default_memory_budget();
     net_options.handshake_timeout =
         std::chrono::milliseconds(std::llround(handshake_timeout_s * 1e3));
     if (!net_options.listen.empty()) swarmnet::install_stop_handlers();

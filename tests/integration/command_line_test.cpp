@@ -32,6 +32,16 @@ TEST(CommandLine, AHugeRefusedArgumentIsEchoedCut) {
   EXPECT_NE(result.output.find("bytes)"), std::string::npos) << result.output.substr(0, 2000);
 }
 
+// --max-memory takes sizes with binary units (CLI11's AsSizeValue); nonsense and 0 are refused.
+TEST(CommandLine, AMemoryBudgetIsASizeWithAUnit) {
+  const auto unknown = run_swarmnet("net --listen 127.0.0.1:0 --max-memory lots");
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.output.find("unit not recognized"), std::string::npos) << unknown.output;
+  const auto zero = run_swarmnet("net --listen 127.0.0.1:0 --max-memory 0");
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_NE(zero.output.find("not in range 1 to"), std::string::npos) << zero.output;
+}
+
 TEST(CommandLine, HelpNamesTheCommand) {
   for (const char* arguments : {"help", "--help"}) {
     const auto result = run_swarmnet(arguments);

@@ -4,26 +4,18 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "outputs/positions_trace.hpp"
 #include "outputs/run_error.hpp"
+#include "outputs/text_file.hpp"
 #include "small_tmpfs.hpp"
 
 namespace swarmnet {
 namespace {
 
 using testing::SmallTmpfs;
-
-std::string text_of(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 TEST(AtomicFile, AFullDiskIsReportedWithTheSystemsReason) {
   SmallTmpfs disk(256 * 1024);
@@ -80,7 +72,7 @@ TEST(AtomicFile, SeeksRewriteInPlaceAsAFileStreamDoes) {
     file.stream() << "!";
     file.commit();
   }
-  EXPECT_EQ(text_of(path), "header++body!");
+  EXPECT_EQ(read_text_file(path), "header++body!");
   std::filesystem::remove(path);
 }
 
@@ -95,7 +87,7 @@ TEST(AtomicFile, AHandedOverFileStaysFinishedUnderItsTemporaryName) {
     file.hand_over();
   }
   EXPECT_FALSE(std::filesystem::exists(path));
-  EXPECT_EQ(text_of(temporary), "whole\n");
+  EXPECT_EQ(read_text_file(temporary), "whole\n");
   std::filesystem::remove(temporary);
 }
 

@@ -5,24 +5,16 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "outputs/run_error.hpp"
+#include "outputs/text_file.hpp"
 #include "small_tmpfs.hpp"
 
 namespace swarmnet {
 namespace {
 
 using testing::SmallTmpfs;
-
-std::string text_of(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 TEST(RunLog, LinesAreInTheFileAsSoonAsWritten) {
   const std::filesystem::path path =
@@ -31,13 +23,13 @@ TEST(RunLog, LinesAreInTheFileAsSoonAsWritten) {
   log.line("seed 1, 50 robots");
   log.line("transport: shared memory");
   // No trailing zeros from the reserved room: the file holds only the text.
-  EXPECT_EQ(text_of(log.temporary()), "seed 1, 50 robots\ntransport: shared memory\n");
+  EXPECT_EQ(read_text_file(log.temporary()), "seed 1, 50 robots\ntransport: shared memory\n");
   EXPECT_FALSE(std::filesystem::exists(path));
   log.commit();
-  EXPECT_EQ(text_of(path), "seed 1, 50 robots\ntransport: shared memory\n");
+  EXPECT_EQ(read_text_file(path), "seed 1, 50 robots\ntransport: shared memory\n");
   EXPECT_FALSE(std::filesystem::exists(log.temporary()));
   log.line("run failed: after the commit");  // appended to the committed log
-  EXPECT_EQ(text_of(path),
+  EXPECT_EQ(read_text_file(path),
             "seed 1, 50 robots\ntransport: shared memory\nrun failed: after the commit\n");
   std::filesystem::remove(path);
 }
@@ -53,7 +45,7 @@ TEST(RunLog, AFullDiskStillGetsTheReason) {
   log.line("transport: shared memory");
   log.fail("run failed: cannot write " + (disk.path() / "summary.json").string() +
            ": No space left on device");
-  EXPECT_EQ(text_of(path),
+  EXPECT_EQ(read_text_file(path),
             "SwarmNet run of scenario 'quickstart'\ntransport: shared memory\n"
             "run failed: cannot write " +
                 (disk.path() / "summary.json").string() + ": No space left on device\n");
@@ -80,7 +72,7 @@ TEST(RunLog, LinesBeyondTheRoomAreRefusedButTheFailureStillFits) {
   const std::string failure =
       "run failed: cannot write " + path.string() + ": No space left on device";
   log.fail(failure);
-  const std::string text = text_of(path);
+  const std::string text = read_text_file(path);
   EXPECT_EQ(text.size(), written * 100 + failure.size() + 1);  // every line written, whole
   EXPECT_TRUE(text.ends_with("\n" + failure + "\n"));
 }
@@ -103,7 +95,7 @@ TEST(RunLog, AFailureTooLongForTheRoomLeftIsShortenedNotLost) {
   RunLog log(path);
   ASSERT_TRUE(disk.leave_free(0));
   log.fail("run failed: " + std::string(200 * 1024, 'x'));
-  const std::string text = text_of(path);
+  const std::string text = read_text_file(path);
   EXPECT_TRUE(text.starts_with("run failed: xxx")) << text.substr(0, 80);
   EXPECT_TRUE(text.ends_with("... (" + std::to_string(12 + 200 * 1024) + " bytes)\n"))
       << text.substr(text.size() - 80);

@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <stdexcept>
 
 #include "outputs/run_error.hpp"
 
@@ -27,29 +26,6 @@ std::uint64_t data_segment_bytes() {
 }
 
 }  // namespace
-
-std::uint64_t parse_memory_size(const std::string& text) {
-  std::size_t used = 0;
-  unsigned long long value = 0;
-  try {
-    value = std::stoull(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  const std::string unit = used == 0 ? "" : text.substr(used);
-  int shift = -1;
-  if (unit.empty() || unit == "B") shift = 0;
-  if (unit == "K" || unit == "KiB") shift = 10;
-  if (unit == "M" || unit == "MiB") shift = 20;
-  if (unit == "G" || unit == "GiB") shift = 30;
-  if (unit == "T" || unit == "TiB") shift = 40;
-  if (used == 0 || shift < 0 || value == 0 || value > (~0ULL >> static_cast<unsigned>(shift))) {
-    throw std::invalid_argument("'" + text.substr(0, 40) +
-                                "' is not a memory size; expected a positive number of bytes, "
-                                "optionally with K, M, G or T (binary: 1K = 1024), e.g. 4G");
-  }
-  return static_cast<std::uint64_t>(value) << static_cast<unsigned>(shift);
-}
 
 std::uint64_t default_memory_budget() {
   const long pages = ::sysconf(_SC_PHYS_PAGES);

@@ -13,10 +13,6 @@ struct MemoryBudget {
   std::uint64_t bytes = 0;  // what the runs may use, above the server's own footprint
 };
 
-// "4G", "512M", "65536K" or plain bytes (binary units); throws std::invalid_argument naming the
-// text and the expected form.
-std::uint64_t parse_memory_size(const std::string& text);
-
 // Half the host's physical memory: a server that takes at most that leaves the host usable.
 std::uint64_t default_memory_budget();
 

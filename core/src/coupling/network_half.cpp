@@ -36,26 +36,25 @@ struct NetworkRun {
 
 // Builds the engine, the run's fixed cost (nodes, plugins, tables), before the welcome: a
 // scenario that does not fit in memory is refused before its first step.
-void open_run(NetworkRun& run, const NetworkSetup& setup, const std::filesystem::path& run_dir) {
+void open_run(NetworkRun& run, const NetworkSetup& setup) {
   run.cpu_start = thread_cpu_seconds();
   const Scenario& scenario = setup.scenario;
   const std::uint64_t heap_before = heap_in_use_bytes();
   try {
-    if (scenario.output.packet_trace) run.trace.emplace(run_dir / kPacketTraceFile);
-    if (scenario.output.frame_trace) run.frames.emplace(run_dir / kFrameTraceFile);
+    if (scenario.output.packet_trace) run.trace.emplace(setup.run_dir / kPacketTraceFile);
+    if (scenario.output.frame_trace) run.frames.emplace(setup.run_dir / kFrameTraceFile);
     run.engine =
         make_network_engine(scenario, *setup.loader, run.trace ? &run.trace->stream() : nullptr,
                             run.frames ? &run.frames->stream() : nullptr,
                             setup.stops_on_signal ? &stop_requested : nullptr);
   } catch (const std::bad_alloc&) {
-    const std::uint64_t reached = heap_in_use_bytes() - std::min(heap_in_use_bytes(), heap_before);
+    const std::uint64_t heap_now = heap_in_use_bytes();
+    const std::uint64_t reached = heap_now > heap_before ? heap_now - heap_before : 0;
     run.engine.reset();
-    throw RunError(
-        "the network of " + std::to_string(scenario.robots.count) +
-        " robots needs more memory than " +
-        (setup.memory_limit.empty() ? std::string("this host gave it") : setup.memory_limit) +
-        " allows: its set-up had taken " + describe_bytes(reached) +
-        " when an allocation failed; refused before the first step");
+    throw RunError("the network of " + std::to_string(scenario.robots.count) +
+                   " robots needs more memory than " + setup.memory_limit +
+                   " allows: its set-up had taken " + describe_bytes(reached) +
+                   " when an allocation failed; refused before the first step");
   }
 }
 
@@ -77,10 +76,8 @@ void serve(NetworkRun& run, const NetworkSetup& setup, StepChannel& channel) {
     } catch (const SimulationInterrupted& interrupted) {
       throw RunError(stopped_by_signal() + " (" + interrupted.what() + ")");
     } catch (const std::bad_alloc&) {
-      throw RunError(
-          "ran out of memory in step " + std::to_string(batch.step) + " (" +
-          (setup.memory_limit.empty() ? std::string("the host's memory") : setup.memory_limit) +
-          ")");
+      throw RunError("ran out of memory in step " + std::to_string(batch.step) + " (" +
+                     setup.memory_limit + ")");
     }
     const double before_send = thread_cpu_seconds();
     const ProtocolResult sent = channel.send_result(result);
@@ -129,7 +126,7 @@ void serve_network_connection(StepChannel& channel,
     const ProtocolResult received = channel.receive_hello(hello);
     if (!received.ok()) throw RunError(received.error);
     accepted.emplace(setup(hello));
-    open_run(run.emplace(), *accepted, accepted->run_dir);
+    open_run(run.emplace(), *accepted);
     if (accepted->step_payload_limit != 0) channel.limit_step_payload(accepted->step_payload_limit);
     const ProtocolResult sent = channel.send_welcome(welcome_for(accepted->scenario));
     if (!sent.ok()) throw RunError(sent.error);

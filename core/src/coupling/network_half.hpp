@@ -36,9 +36,9 @@ struct NetworkSetup {
   bool stops_on_signal = false;
   // A server's memory budget: one step's payloads may hold at most this many bytes (0: no
   // bound), and what an allocation failure is reported against ("the server's memory budget of
-  // 4.0 GiB (--max-memory)"; empty: the host's memory).
+  // 4.0 GiB (--max-memory)").
   std::uint64_t step_payload_limit = 0;
-  std::string memory_limit;
+  std::string memory_limit = "the host's memory";
   // A child or a thread writes into the robot half's own run directory, whose outputs the robot
   // half commits together; a server commits its traces in the directory it named itself.
   TraceCommit traces = TraceCommit::by_robot_half;
