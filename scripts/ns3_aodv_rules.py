@@ -1,6 +1,8 @@
 """ns-3.37's AODV as SwarmNet's `aodv` plugin describes it: the parameters that make the plugin
 behave as ns-3.37's aodv-routing-protocol.cc does where it departs from RFC 3561 (docs/plugins.md,
-aodv; docs/validation.md, "The saturated rows, and ns-3's control-message rules").
+aodv; docs/history/validation-journal.md, "The saturated rows, and ns-3's control-message rules",
+and each later rule's section there, listed in docs/validation.md, "ns-3.37's rules on SwarmNet's
+side").
 
 Two sequence-number rules (a broken route keeps its number; a RREQ leaves the route to its sender
 without a valid number) and four control-message rules (a RREP forwarded over an invalid reverse

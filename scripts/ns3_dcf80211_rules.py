@@ -1,7 +1,7 @@
 """ns-3.37's 802.11 MAC as SwarmNet's `dcf80211` plugin describes it: the parameters that make the
 plugin behave as ns-3.37's WifiMacQueue and WifiRemoteStationManager do where the plugin's
-defaults do otherwise (docs/plugins.md, dcf80211's link feedback; docs/validation.md, "The
-150-robot row with ns-3's MAC rules").
+defaults do otherwise (docs/plugins.md, dcf80211's link feedback;
+docs/history/validation-journal.md, "The 150-robot row with ns-3's MAC rules").
 
 - mpdu_lifetime: ns3. The queue's MaxDelay (500 ms) applies to every MPDU, the one being
   retried included, and expired MPDUs are removed at every arrival, channel access and release

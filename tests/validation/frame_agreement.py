@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """Frame by frame, how each side's unicast frames fare: SwarmNet's frame trace against the ns-3
-replay's, over the same traces (docs/validation.md, issue 19's 150-robot row).
+replay's, over the same traces (docs/validation.md, "AODV: the saturated 150-robot row", issue
+19's 150-robot row; the analyses made with it: docs/history/validation-journal.md, "The 150-robot
+row frame by frame" and "The 150-robot row's lost attempts: whose frame, and when").
 
   --pair RUN_DIR:NS3_FRAMES ...   a SwarmNet run directory written with output.frame_trace=true
                                   (its frames.csv and mobility.ns2) and the replay's --frame-trace

@@ -27,8 +27,9 @@ set alike on both sides (`queue_limit` / `--queue-packets`, `queue_max_delay_s` 
 With ns-3's default queue discipline (fq_codel, which Ipv4AddressHelper installs) the burst
 would wait above the MAC instead of being dropped: that is ns-3 as users run it, and SwarmNet has
 no queue discipline (docs/validation.md). These cases are what lets the validation grid read
-ns-3's `queue_drops` beside SwarmNet's drop reasons (docs/validation.md, the saturated flooding
-row). Python standard library only.
+ns-3's `queue_drops` beside SwarmNet's drop reasons (the saturated dense flooding row:
+docs/history/validation-journal.md, "Where ns-3's discards go, traced", under "The one-hop and
+flooding rows on the default stack"). Python standard library only.
 """
 import functools
 import os

@@ -56,14 +56,15 @@ DISK_NETWORK = {
 #
 # In all three, SwarmNet's AODV keeps ns-3.37's rules (scripts/ns3_aodv_rules.py). Its
 # sequence-number rules: ns-3.37 keeps a broken or expired route's sequence number where RFC 3561
-# 6.11 increments it (docs/validation.md: on the dense row its re-discoveries draw twice the RREPs),
-# and a RREQ leaves the route to the neighbour that sent it without a valid sequence number, so that
-# no node answers for that neighbour until its next HELLO (without it SwarmNet's discoveries end a
-# ring earlier: issue 19's delay). Its four control-message rules decide how RREPs, RERRs and the
-# buffer move under load (docs/validation.md, "The saturated rows"). SwarmNet's AODV is compared
-# like for like: ns-3's variant of the protocol, not SwarmNet's default. So is its 802.11 MAC:
-# dcf80211 with ns-3.37's MPDU lifetime and station retry counts (scripts/ns3_dcf80211_rules.py),
-# which change a run only where packets wait longer than 500 ms.
+# 6.11 increments it (docs/history/validation-journal.md, "The aligned grid (before issue 19)": on
+# the dense row its re-discoveries draw twice the RREPs), and a RREQ leaves the route to the
+# neighbour that sent it without a valid sequence number, so that no node answers for that neighbour
+# until its next HELLO (without it SwarmNet's discoveries end a ring earlier: issue 19's delay). Its
+# four control-message rules decide how RREPs, RERRs and the buffer move under load
+# (docs/history/validation-journal.md, "The saturated rows, and ns-3's control-message rules").
+# SwarmNet's AODV is compared like for like: ns-3's variant of the protocol, not SwarmNet's default.
+# So is its 802.11 MAC: dcf80211 with ns-3.37's MPDU lifetime and station retry counts
+# (scripts/ns3_dcf80211_rules.py), which change a run only where packets wait longer than 500 ms.
 # "replay_arp_entries" is what the replay reports for its ARP entries (its JSON's arp.entries) under
 # the options of "replay"; ARP frames go on the air only with "none" (nothing resolved beforehand).
 SETUPS = {

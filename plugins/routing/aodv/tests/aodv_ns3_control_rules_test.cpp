@@ -38,7 +38,8 @@
 // And when its routes age:
 //   lookups_age_all_routes           every route lookup ages the whole table (Purge); no timer
 //                                    ages it.
-// Why they matter: docs/validation.md, "The saturated rows, and ns-3's control-message rules".
+// Why they matter: docs/history/validation-journal.md, "The saturated rows, and ns-3's
+// control-message rules", and the sections of the later rules (docs/validation.md lists them).
 #include <gtest/gtest.h>
 
 #include <algorithm>
