@@ -140,6 +140,26 @@ struct Refusal {
   std::string message;   // a fragment of what it says
 };
 
+// Send options come from a controller during the run, so the engine can refuse them only when
+// the first arrives: the run fails naming the robot, the message and what it asked for.
+TEST(Ns3Engine, AMessageWithSendOptionsFailsTheRunByName) {
+  TempDir plugins;
+  std::filesystem::copy_file(
+      std::filesystem::path(SWARMNET_TEST_FIXTURE_DIR) / "swarmnet_report_probe.so",
+      plugins.path() / "swarmnet_report_probe.so");
+  TempDir dir;
+  const auto result =
+      run_swarmnet("run " + kScenario + kSmall + " --set plugin_paths=[" + plugins.path().string() +
+                   "] --set 'robots.controllers.1={plugin: report_probe}'"
+                   " --quiet --out " +
+                   (dir.path() / "run").string());
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find("robot 0's message 0 asks for a send report (SendOptions); "
+                               "network.engine: ns3 gives neither"),
+            std::string::npos)
+      << result.output;
+}
+
 TEST(Ns3Engine, WhatNs3CannotRunIsRefusedBeforeTheRunWithWhereAndWhy) {
   const std::vector<Refusal> refusals = {
       {"'network.mac={plugin: ideal_mac}'", "--set network.mac",

@@ -60,6 +60,25 @@ void expect_identical_runs(const std::vector<std::string>& variants) {
   }
 }
 
+// A folder holding only the test fixture plugin `name`: the fixtures' folder also holds
+// stand-ins for real plugins.
+void copy_fixture(const TempDir& folder, const std::string& name) {
+  const std::string file = "swarmnet_" + name + ".so";
+  std::filesystem::copy_file(std::filesystem::path(SWARMNET_TEST_FIXTURE_DIR) / file,
+                             folder.path() / file);
+}
+
+// `base` on every transport gives the same bytes, in each sync mode.
+void expect_identical_on_every_transport(const std::string& base) {
+  for (const char* sync : {"strict", "pipelined"}) {
+    std::vector<std::string> variants;
+    for (const char* transport : {"shm", "inproc", "uds", "tcp"}) {
+      variants.push_back(base + " --set sync=" + sync + " --transport " + transport);
+    }
+    expect_identical_runs(variants);
+  }
+}
+
 TEST(RunDeterminism, SameSeedGivesIdenticalBytesInStrictMode) {
   expect_identical_runs({" --seed 7", " --seed 7"});
 }
@@ -70,34 +89,19 @@ TEST(RunDeterminism, SameSeedGivesIdenticalBytesInPipelinedMode) {
 
 // Every transport carries the same records, so every transport gives the same bytes.
 TEST(RunDeterminism, EveryTransportGivesIdenticalBytes) {
-  for (const char* sync : {"strict", "pipelined"}) {
-    std::vector<std::string> variants;
-    for (const char* transport : {"shm", "inproc", "uds", "tcp"}) {
-      variants.push_back(std::string(" --seed 3 --set sync=") + sync + " --transport " + transport);
-    }
-    expect_identical_runs(variants);
-  }
+  expect_identical_on_every_transport(" --seed 3");
 }
 
 // Radio neighbour tables cross in the step protocol like deliveries: a controller reading them
 // (the neighbor_probe fixture, beaconing in place of cbr) sees the same tables on every
 // transport, in each sync mode.
 TEST(RunDeterminism, EveryTransportGivesIdenticalNeighborTables) {
-  // The probe alone in a folder: the fixtures' folder also holds stand-ins for real plugins.
   TempDir plugins;
-  std::filesystem::copy_file(
-      std::filesystem::path(SWARMNET_TEST_FIXTURE_DIR) / "swarmnet_neighbor_probe.so",
-      plugins.path() / "swarmnet_neighbor_probe.so");
+  copy_fixture(plugins, "neighbor_probe");
   const std::string probe = " --set network.neighbors.enabled=true --set plugin_paths=[" +
                             plugins.path().string() +
                             "] --set 'robots.controllers.1={plugin: neighbor_probe}'";
-  for (const char* sync : {"strict", "pipelined"}) {
-    std::vector<std::string> variants;
-    for (const char* transport : {"shm", "inproc", "uds", "tcp"}) {
-      variants.push_back(probe + " --seed 3 --set sync=" + sync + " --transport " + transport);
-    }
-    expect_identical_runs(variants);
-  }
+  expect_identical_on_every_transport(probe + " --seed 3");
   TempDir dir;
   run_into(dir.path() / "run", probe + " --seed 3");
   const auto summary = nlohmann::json::parse(read_file(dir.path() / "run" / "summary.json"));
@@ -112,6 +116,38 @@ TEST(RunDeterminism, EveryTransportGivesIdenticalNeighborTables) {
   EXPECT_EQ(refused.exit_code, 1) << refused.output;
   EXPECT_NE(refused.output.find("set network.neighbors.enabled: true"), std::string::npos)
       << refused.output;
+}
+
+// Send options and reports cross in the step protocol too: a controller sending one-hop beacons
+// and unicasts that ask for reports (the report_probe fixture) gets the same reports on every
+// transport, in each sync mode; its beacons travel one hop; and a replay of the run, which reads
+// the options from send_options.csv, gives the run's packets.
+TEST(RunDeterminism, EveryTransportGivesIdenticalSendReports) {
+  TempDir plugins;
+  copy_fixture(plugins, "report_probe");
+  const std::string probe = " --set plugin_paths=[" + plugins.path().string() +
+                            "] --set 'network.mac={plugin: dcf80211}'"
+                            " --set 'network.routing={plugin: aodv}'"
+                            " --set 'robots.controllers.1={plugin: report_probe}'";
+  expect_identical_on_every_transport(probe + " --seed 3");
+  TempDir dir;
+  const auto run = dir.path() / "run";
+  run_into(run, probe + " --seed 3");
+  const auto summary = nlohmann::json::parse(read_file(run / "summary.json"));
+  const auto& controllers = summary["controllers"];
+  // AODV unicasts are acknowledged by their first hop; the beacons are sent.
+  for (const char* outcome : {"report_acknowledged", "report_sent"}) {
+    EXPECT_GT(controllers[outcome]["count"].get<double>(), 0.0) << outcome << controllers.dump();
+  }
+  EXPECT_EQ(controllers["beacon_hops"]["max"].get<double>(), 1.0) << controllers.dump();
+  EXPECT_GE(controllers["report_attempts"]["min"].get<double>(), 1.0);
+  EXPECT_GE(controllers["report_delay_s"]["min"].get<double>(), 0.0);
+  ASSERT_TRUE(std::filesystem::exists(run / "send_options.csv"));
+
+  const auto replay =
+      run_swarmnet("replay " + run.string() + " --quiet --out " + (dir.path() / "replay").string());
+  ASSERT_EQ(replay.exit_code, 0) << replay.output;
+  EXPECT_TRUE(read_file(run / "packets.csv") == read_file(dir.path() / "replay" / "packets.csv"));
 }
 
 TEST(RunDeterminism, AnotherSeedGivesDifferentTraces) {

@@ -42,7 +42,8 @@ class NetworkApplicationUnit : public ::testing::Test {
   std::ostringstream trace_text_;
   PacketTraceWriter trace_{&trace_text_};
   PacketUidSource uids_;
-  ApplicationLayer application_{3, metrics_, trace_, uids_};
+  SendReports reports_;
+  ApplicationLayer application_{3, metrics_, trace_, uids_, reports_};
   NullRouting routing_;
   std::vector<Delivery> deliveries_;
 };

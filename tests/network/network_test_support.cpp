@@ -105,7 +105,8 @@ std::vector<StepBatch> random_batches(const NetworkSettings& settings, std::uint
 }
 
 RunOutput run(const NetworkSettings& settings, PluginLoader& loader,
-              const std::vector<StepBatch>& batches) {
+              const std::vector<StepBatch>& batches,
+              std::vector<AddressedSendReport>* send_reports) {
   RunOutput output;
   std::ostringstream trace;
   {
@@ -116,6 +117,10 @@ RunOutput run(const NetworkSettings& settings, PluginLoader& loader,
       EXPECT_EQ(result.step, batch.step);
       output.events_per_step.push_back(result.events);
       for (auto& delivery : result.deliveries) output.deliveries.push_back(std::move(delivery));
+      if (send_reports != nullptr) {
+        send_reports->insert(send_reports->end(), result.send_reports.begin(),
+                             result.send_reports.end());
+      }
     }
     simulator.finish();
     output.report = network_report_json(simulator.report());

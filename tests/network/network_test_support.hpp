@@ -49,9 +49,11 @@ struct RunOutput {
   nlohmann::ordered_json report;
 };
 
-// A whole run: constructs a NetworkSimulator, runs every batch, finishes.
+// A whole run: constructs a NetworkSimulator, runs every batch, finishes; appends every step's
+// send reports to `send_reports` if given.
 RunOutput run(const NetworkSettings& settings, PluginLoader& loader,
-              const std::vector<StepBatch>& batches);
+              const std::vector<StepBatch>& batches,
+              std::vector<AddressedSendReport>* send_reports = nullptr);
 
 struct TraceLine {
   std::int64_t time_ns = 0;

@@ -86,9 +86,11 @@ class RecordingRobot final : public RobotContext {
     return {};
   }
   void set_wheel_speeds(double /*left_mps*/, double /*right_mps*/) override {}
-  std::uint64_t send(RobotId /*destination*/, std::span<const std::byte> /*payload*/) override {
+  std::uint64_t send(RobotId /*destination*/, std::span<const std::byte> /*payload*/,
+                     const SendOptions& /*options*/) override {
     return 0;
   }
+  [[nodiscard]] std::span<const SendReport> send_reports() const override { return {}; }
   void request(std::string_view /*name*/, std::span<const double> /*args*/) override {}
   void record(std::string_view metric, double value) override {
     records.emplace_back(std::string(metric), value);
@@ -288,11 +290,11 @@ TEST(PluginLoader, DiscoverListsPluginsByKindThenNameAndReportsBrokenFiles) {
     }
   }
   EXPECT_EQ(fixtures,
-            (std::vector<std::string>{"physics kinematic2d", "propagation test_propagation",
-                                      "mac ideal_mac", "routing busy_routing",
-                                      "routing test_routing", "controller busy_controller",
-                                      "controller neighbor_probe", "controller test_controller",
-                                      "controller world_probe", "world test_world"}));
+            (std::vector<std::string>{
+                "physics kinematic2d", "propagation test_propagation", "mac ideal_mac",
+                "routing busy_routing", "routing test_routing", "controller busy_controller",
+                "controller neighbor_probe", "controller report_probe",
+                "controller test_controller", "controller world_probe", "world test_world"}));
 
   std::vector<std::string> broken_files;
   for (const auto& file : broken) {

@@ -452,5 +452,109 @@ TEST_F(StepChannelBounds, ANeighborTableNobodyAskedForIsRefused) {
   EXPECT_NE(r.error.find("sent a neighbour table nobody asked for"), std::string::npos) << r.error;
 }
 
+// Send options ride in message records; reports come back once per message that asked, to the
+// robot and port that sent it, and any other report is refused.
+TEST_F(StepChannelBounds, SendOptionsAndReportsRoundTripAndOnlyOwedReportsAreTaken) {
+  const Welcome welcome{1, 4, 100'000'000};
+  robot_.fix_limits(welcome);
+  network_.fix_limits(welcome);
+  StepBatch batch = sample_batch(4, 3);
+  batch.messages[0].hop_limit = 1;
+  batch.messages[1].report = true;
+  batch.messages[2].hop_limit = 255;
+  batch.messages[2].report = true;
+  ASSERT_TRUE(robot_.send_batch(batch).ok());
+  StepBatch got;
+  bool finished = true;
+  ASSERT_TRUE(network_.receive_batch(got, finished).ok());
+  ASSERT_EQ(got.messages.size(), 3U);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(got.messages[i].hop_limit, batch.messages[i].hop_limit) << i;
+    EXPECT_EQ(got.messages[i].report, batch.messages[i].report) << i;
+  }
+
+  StepResult result;
+  result.step = 0;
+  AddressedSendReport ack{batch.messages[1].source, batch.messages[1].port, {}};
+  ack.report = {batch.messages[1].message_id,
+                SendOutcome::acknowledged,
+                DropReason::no_route,
+                SimTime{12345},
+                2,
+                3};
+  AddressedSendReport drop{batch.messages[2].source, batch.messages[2].port, {}};
+  drop.report = {batch.messages[2].message_id,
+                 SendOutcome::dropped,
+                 DropReason::arp_unresolved,
+                 SimTime{99},
+                 kNoNode,
+                 0};
+  result.send_reports = {ack, drop};
+  ASSERT_TRUE(network_.send_result(result).ok());
+  StepResult back;
+  const ProtocolResult r = robot_.receive_result(back);
+  ASSERT_TRUE(r.ok()) << r.error;
+  ASSERT_EQ(back.send_reports.size(), 2U);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto& a = back.send_reports[i];
+    const auto& b = result.send_reports[i];
+    EXPECT_EQ(a.source, b.source);
+    EXPECT_EQ(a.port, b.port);
+    EXPECT_EQ(a.report.message_id, b.report.message_id);
+    EXPECT_EQ(a.report.outcome, b.report.outcome);
+    EXPECT_EQ(a.report.reason, b.report.reason);
+    EXPECT_EQ(a.report.at, b.report.at);
+    EXPECT_EQ(a.report.next_hop, b.report.next_hop);
+    EXPECT_EQ(a.report.attempts, b.report.attempts);
+  }
+
+  // The same report again, one for a message that asked for none, one from another port.
+  AddressedSendReport stray = ack;
+  stray.report.message_id = batch.messages[0].message_id;
+  stray.source = batch.messages[0].source;
+  stray.port = batch.messages[0].port;
+  for (const AddressedSendReport* bad_report : {&ack, &stray}) {
+    const AddressedSendReport& bad = *bad_report;
+    // Each on a channel of its own: a refusal leaves the rest of its result unread.
+    InprocChannel link(std::uint64_t{1} << 16, impatient());
+    StepChannel robot(link.robot_end(), "the network half");
+    StepChannel network(link.network_end(), "the robot half");
+    shake_hands(robot, network, 4);
+    ASSERT_TRUE(robot.send_batch(batch).ok());
+    ASSERT_TRUE(network.receive_batch(got, finished).ok());
+    if (bad_report == &ack) {  // reported once already
+      result.send_reports = {ack};
+      ASSERT_TRUE(network.send_result(result).ok());
+      ASSERT_TRUE(robot.receive_result(back).ok());
+    }
+    result.send_reports = {bad};
+    ASSERT_TRUE(network.send_result(result).ok());
+    const ProtocolResult refused = robot.receive_result(back);
+    EXPECT_EQ(refused.io, IoStatus::corrupt);
+    EXPECT_NE(refused.error.find("which asked for none there or was reported already"),
+              std::string::npos)
+        << refused.error;
+  }
+}
+
+TEST_F(StepChannelBounds, AReportWithAnOutcomeOrReasonOutOfRangeIsMalformed) {
+  const Welcome welcome{1, 4, 100'000'000};
+  robot_.fix_limits(welcome);
+  network_.fix_limits(welcome);
+  StepBatch batch = sample_batch(4, 1);
+  batch.messages[0].report = true;
+  ASSERT_TRUE(robot_.send_batch(batch).ok());
+  const AppMessage& m = batch.messages[0];
+  for (const auto [outcome, reason] : {std::pair<std::uint8_t, std::uint8_t>{3, 0}, {2, 7}}) {
+    const auto record = encode(RecordType::send_report, m.message_id, m.source, m.port, outcome,
+                               reason, std::int64_t{0}, kNoNode, std::uint32_t{0});
+    ASSERT_EQ(link_.network_end().send(record), IoStatus::ok);
+    ASSERT_EQ(link_.network_end().flush(), IoStatus::ok);
+    StepResult got;
+    const ProtocolResult r = robot_.receive_result(got);
+    EXPECT_NE(r.error.find("malformed send_report record"), std::string::npos) << r.error;
+  }
+}
+
 }  // namespace
 }  // namespace swarmnet

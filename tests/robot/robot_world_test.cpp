@@ -210,6 +210,34 @@ TEST_F(RobotContextTest, ControllersReadTheAxleTheArenaAndTheirPort) {
   EXPECT_EQ(outbox_[0].port, 4U);  // the message goes to port 4 on its receivers
 }
 
+TEST_F(RobotContextTest, SendOptionsReachTheOutboxAndReportsTheirOwnPort) {
+  WorldRobotContext robot(state_, 1);
+  state_.current_port = 4;
+  state_.current_port_index = 1;
+  const std::vector<std::byte> payload(2, std::byte{7});
+  robot.send(2, payload, SendOptions{1, true});
+  robot.send(kBroadcast, payload);
+  ASSERT_EQ(outbox_.size(), 2U);
+  EXPECT_EQ(outbox_[0].hop_limit, 1U);
+  EXPECT_TRUE(outbox_[0].report);
+  EXPECT_EQ(outbox_[1].hop_limit, 0U);
+  EXPECT_FALSE(outbox_[1].report);
+
+  // Slots robot * ports + port index, ascending: robot 0 port 4, robot 1 port 0 and port 4.
+  state_.send_report_slots = {1, 2, 3, 3};
+  state_.send_reports.resize(4);
+  for (std::size_t i = 0; i < 4; ++i) state_.send_reports[i].message_id = 10 + i;
+  const auto mine = robot.send_reports();
+  ASSERT_EQ(mine.size(), 2U);
+  EXPECT_EQ(mine[0].message_id, 12U);
+  EXPECT_EQ(mine[1].message_id, 13U);
+  state_.current_port = 0;
+  state_.current_port_index = 0;
+  ASSERT_EQ(robot.send_reports().size(), 1U);
+  EXPECT_EQ(robot.send_reports()[0].message_id, 11U);
+  EXPECT_TRUE(WorldRobotContext(state_, 2).send_reports().empty());
+}
+
 TEST_F(RobotContextTest, WheelSpeedsAreClamped) {
   WorldRobotContext robot(state_, 1);
   robot.set_wheel_speeds(2.0, -3.0);

@@ -107,6 +107,30 @@ TEST(FakeRobotContext, ActuatorsBehaveAsTheKernelPromises) {
   EXPECT_EQ(robot.now(), from_seconds(0.1));
 }
 
+// A controller's decision on its send reports, tested on the kit: a beacon whose report says it
+// was dropped is sent again, one hop only.
+TEST(FakeRobotContext, SendOptionsAreRecordedAndReportsFaked) {
+  FakeRobotContext robot;
+  const std::vector<std::byte> beacon(4);
+  const std::uint64_t id = robot.send(kBroadcast, beacon, SendOptions{1, true});
+  ASSERT_EQ(robot.sent.size(), 1U);
+  EXPECT_EQ(robot.sent[0].options.hop_limit, 1U);
+  EXPECT_TRUE(robot.sent[0].options.report);
+  robot.send(3, beacon);  // without options
+  EXPECT_EQ(robot.sent[1].options.hop_limit, 0U);
+  EXPECT_FALSE(robot.sent[1].options.report);
+
+  robot.reports = {{id, SendOutcome::dropped, DropReason::queue_full, from_seconds(0.05)}};
+  for (const SendReport& report : robot.send_reports()) {
+    if (report.outcome == SendOutcome::dropped) {
+      robot.send(kBroadcast, robot.sent[report.message_id].payload, SendOptions{1, true});
+    }
+  }
+  ASSERT_EQ(robot.sent.size(), 3U);
+  EXPECT_EQ(robot.sent[2].destination, kBroadcast);
+  EXPECT_EQ(robot.sent[2].options.hop_limit, 1U);
+}
+
 // A stand-in plugin class with a parameter table, for plugin_args.
 struct Tabled {
   static PluginInfo info() {

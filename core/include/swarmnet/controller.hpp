@@ -19,6 +19,7 @@
 #include "swarmnet/ids.hpp"
 #include "swarmnet/plugin.hpp"
 #include "swarmnet/radio_neighbor.hpp"
+#include "swarmnet/send_report.hpp"
 #include "swarmnet/units.hpp"
 #include "swarmnet/vector.hpp"
 
@@ -62,6 +63,11 @@ class RobotContext {
   // most recently heard). Throws std::logic_error unless the scenario sets
   // network.neighbors.enabled: true (the network half keeps no tables otherwise).
   [[nodiscard]] virtual std::span<const RadioNeighbor> neighbors() const = 0;
+  // Reports on this robot's messages sent from port() with SendOptions::report, each once, when
+  // its outcome happened in the network window whose deliveries inbox() holds (so with the
+  // inbox's delay), in the order the outcomes happened. A message still queued at the end of
+  // the run gets none.
+  [[nodiscard]] virtual std::span<const SendReport> send_reports() const = 0;
   // A reading that one of the scenario's world plugins offers this robot (swarmnet/world.hpp),
   // laid out as that plugin documents. Valid until the next call of reading() by any controller
   // (copy what you keep). Throws
@@ -71,10 +77,15 @@ class RobotContext {
   // Actuators. Wheel speeds are clamped to +/- max_speed_mps().
   virtual void set_wheel_speeds(double left_mps, double right_mps) = 0;
   // Sends a message to port() on one robot, or on every robot (kBroadcast). Returns its message
-  // id. A payload larger than
-  // kMaxPayloadBytes is refused with std::invalid_argument; a message beyond the swarm's
-  // kMaxMessagesPerRobotStep x robots in one step with std::length_error.
-  virtual std::uint64_t send(RobotId destination, std::span<const std::byte> payload) = 0;
+  // id. `options` (swarmnet/send_report.hpp) may limit its hops (1: radio neighbours only) and
+  // ask for its SendReport. A payload larger than kMaxPayloadBytes is refused with
+  // std::invalid_argument; a message beyond the swarm's kMaxMessagesPerRobotStep x robots in one
+  // step with std::length_error.
+  virtual std::uint64_t send(RobotId destination, std::span<const std::byte> payload,
+                             const SendOptions& options) = 0;
+  std::uint64_t send(RobotId destination, std::span<const std::byte> payload) {
+    return send(destination, payload, SendOptions{});
+  }
 
   // Asks the world plugin that offers request `name` for it (swarmnet/world.hpp). Throws
   // std::invalid_argument for a name no world offers, or arguments the world refuses.

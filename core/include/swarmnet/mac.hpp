@@ -27,6 +27,10 @@ class MacContext : public NodeContext {
   virtual void link_failed(const Packet& packet, NodeId next_hop) = 0;
   // Discards a packet (traced and counted).
   virtual void drop(const Packet& packet, DropReason reason) = 0;
+  // Tells the kernel that `next_hop` acknowledged `packet` after `attempts` transmissions (RTS
+  // or data; 1 for the first). A MAC whose acknowledges_unicasts() is true calls it for every
+  // acknowledged unicast: the sender's send report (swarmnet/send_report.hpp) comes from it.
+  virtual void acknowledged(const Packet& packet, NodeId next_hop, std::uint32_t attempts) = 0;
 
  protected:
   ~MacContext() = default;
@@ -38,6 +42,10 @@ class Mac : public Plugin {
 
   // Called once before any traffic; the context outlives the plugin instance.
   virtual void attach(MacContext& context) = 0;
+  // Whether this MAC learns that a unicast arrived (an ACK) and says so through
+  // MacContext::acknowledged(). If not, a sender's report says its unicast was `sent` when its
+  // frame went on the air, as for a broadcast.
+  [[nodiscard]] virtual bool acknowledges_unicasts() const { return false; }
   // From routing: send `packet` to `next_hop` (or kBroadcast).
   virtual void enqueue(Packet packet, NodeId next_hop) = 0;
   // The frame given to transmit() has left the antenna.

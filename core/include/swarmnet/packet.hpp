@@ -41,12 +41,20 @@ struct Packet {
   // not in them: it adds nothing to a frame's size. Routing copies it with the packet.
   std::uint16_t port = 0;
   std::uint32_t hops = 0;  // links traversed so far; the kernel counts them on reception
+  // The sender's limit on links (SendOptions::hop_limit), 0 for none; carried beside the bytes
+  // like `port`. Every routing plugin honours it: see may_travel_further().
+  std::uint8_t hop_limit = 0;
   LinkProtocol protocol = LinkProtocol::ipv4;
   std::vector<std::uint8_t> header;        // the routing protocol's own header, serialised by it
   std::shared_ptr<const Payload> payload;  // application bytes (null for control packets)
 
   [[nodiscard]] bool is_control() const { return message_id == kNoMessage; }
   [[nodiscard]] bool is_arp() const { return protocol != LinkProtocol::ipv4; }
+  // Whether a node that received this packet may relay it: false once it has crossed its
+  // sender's hop_limit. A routing plugin then delivers it if it is for this node and relays it
+  // no further (a broadcast has reached its scope: not a drop; a unicast for another node is
+  // dropped as ttl_expired).
+  [[nodiscard]] bool may_travel_further() const { return hop_limit == 0 || hops < hop_limit; }
   [[nodiscard]] std::uint32_t payload_bytes() const {
     return payload ? static_cast<std::uint32_t>(payload->size()) : 0U;
   }

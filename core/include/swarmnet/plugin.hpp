@@ -30,7 +30,9 @@ namespace swarmnet {
 // Arena::objects. 4: world plugins, RobotContext's readings and requests. 5:
 // RobotContext::show_state, WorldContext::show_object and hide_object (what the viewer draws).
 // 6: Packet::protocol (ARP), RoutingContext::link_address_known. 7: RobotContext::neighbors.
-inline constexpr std::uint32_t kAbiVersion = 7;
+// 8: send options and reports (RobotContext::send's options, send_reports; Packet::hop_limit;
+// MacContext::acknowledged; Mac::acknowledges_unicasts).
+inline constexpr std::uint32_t kAbiVersion = 8;
 
 enum class PluginKind : std::uint8_t { physics, propagation, mac, routing, controller, world };
 

@@ -3,8 +3,9 @@
 namespace swarmnet {
 
 ApplicationLayer::ApplicationLayer(std::size_t node_count, NetworkMetrics& metrics,
-                                   PacketTraceWriter& trace, PacketUidSource& uids)
-    : metrics_(metrics), trace_(trace), uids_(uids), seen_(node_count) {}
+                                   PacketTraceWriter& trace, PacketUidSource& uids,
+                                   SendReports& reports)
+    : metrics_(metrics), trace_(trace), uids_(uids), reports_(reports), seen_(node_count) {}
 
 void ApplicationLayer::inject(const Message& message, SimTime now, Routing& source_routing) {
   Packet packet;
@@ -15,11 +16,14 @@ void ApplicationLayer::inject(const Message& message, SimTime now, Routing& sour
   packet.sent_at = now;
   packet.port = message.port;
   packet.payload = message.payload;
+  packet.hop_limit = message.hop_limit;
+  if (message.report) reports_.expect(message.message_id, message.source, message.port);
   const bool broadcast = packet.destination == kBroadcast;
   metrics_.message_sent(broadcast);
   if (!broadcast) awaiting_.insert(packet.message_id);
   trace_.record(now, PacketEvent::send, packet.source, packet);
   if (packet.destination == packet.source) {
+    if (message.report) reports_.met(packet.source, packet, SendOutcome::sent, now, packet.source);
     deliver(packet.source, packet, now);
     return;
   }

@@ -23,6 +23,7 @@
 #include "network/network_metrics.hpp"
 #include "network/packet_trace.hpp"
 #include "network/packet_uid_source.hpp"
+#include "network/send_reports.hpp"
 #include "protocol/step_data.hpp"
 #include "swarmnet/packet.hpp"
 #include "swarmnet/routing.hpp"
@@ -40,16 +41,19 @@ class ApplicationLayer {
     NodeId destination = kBroadcast;
     std::uint16_t port = 0;
     std::shared_ptr<const Payload> payload;
+    std::uint8_t hop_limit = 0;  // SendOptions::hop_limit
+    bool report = false;         // SendOptions::report
   };
 
   ApplicationLayer(std::size_t node_count, NetworkMetrics& metrics, PacketTraceWriter& trace,
-                   PacketUidSource& uids);
+                   PacketUidSource& uids, SendReports& reports);
 
   // Where deliveries are appended (the current step's result); null: recorded in metrics only.
   void set_output(std::vector<Delivery>* deliveries) { output_ = deliveries; }
 
   // Takes `message` in at `now`: traces "send", then hands the packet to `source_routing` (the
-  // source node's routing), or delivers it at once if it is addressed to its source.
+  // source node's routing), or delivers it at once if it is addressed to its source (its report,
+  // if it wants one: sent, to itself, at once).
   void inject(const Message& message, SimTime now, Routing& source_routing);
 
   // Routing at `receiver` delivers `packet` to its robot at `now`. Returns false for a suppressed
@@ -65,6 +69,7 @@ class ApplicationLayer {
   NetworkMetrics& metrics_;
   PacketTraceWriter& trace_;
   PacketUidSource& uids_;
+  SendReports& reports_;
   std::vector<Delivery>* output_ = nullptr;
   std::vector<std::set<SeenKey>> seen_;  // per node, ordered by sent_at for pruning
   std::set<std::uint64_t> awaiting_;     // unicast message ids not yet at their destination

@@ -41,7 +41,7 @@ NetworkSimulator::NetworkSimulator(const NetworkSettings& settings, PluginLoader
       trace_(packet_trace),
       frames_(frame_trace),
       channel_(settings, PropagationChain(settings, loader), scheduler_, settings.nodes),
-      application_(settings.nodes, metrics_, trace_, packet_uids_) {
+      application_(settings.nodes, metrics_, trace_, packet_uids_, send_reports_) {
   if (settings.network.neighbors.enabled) {
     neighbors_.emplace(settings.nodes, settings.network.neighbors);
   }
@@ -52,6 +52,7 @@ NetworkSimulator::NetworkSimulator(const NetworkSettings& settings, PluginLoader
                               frames_,
                               metrics_,
                               packet_uids_,
+                              send_reports_,
                               derive_seed(settings.seed, {hash_name("phy")}),
                               derive_seed(settings.seed, {hash_name("arp")}),
                               neighbors_ ? &*neighbors_ : nullptr};
@@ -111,9 +112,13 @@ void NetworkSimulator::run_step(const StepBatch& batch, StepResult& result) {
   std::uint64_t events = scheduler_.run_until(batch.start);  // a gap between windows, if any
   channel_.set_positions(batch.positions);
   for (const AppMessage& message : batch.messages) {
-    ApplicationLayer::Message pending{message.message_id, message.source, message.destination,
+    ApplicationLayer::Message pending{message.message_id,
+                                      message.source,
+                                      message.destination,
                                       message.port,
-                                      std::make_shared<const Payload>(message.payload)};
+                                      std::make_shared<const Payload>(message.payload),
+                                      message.hop_limit,
+                                      message.report};
     Routing& routing = nodes_[message.source]->routing();
     scheduler_.schedule_at(batch.start + injection_offset(traffic_seed_, message.message_id, step_),
                            [this, pending = std::move(pending), &routing] {
@@ -122,6 +127,8 @@ void NetworkSimulator::run_step(const StepBatch& batch, StepResult& result) {
   }
   events += scheduler_.run_until(batch.start + step_);
   if (neighbors_) neighbors_->collect(scheduler_.now(), result.neighbor_counts, result.neighbors);
+  result.send_reports.clear();
+  send_reports_.collect(result.send_reports);
 
   trace_.flush();
   frames_.flush();

@@ -85,6 +85,7 @@ class NetworkSimulator final : public NetworkEngine {
   PacketTraceWriter trace_;
   FrameTraceWriter frames_;
   PacketUidSource packet_uids_;
+  SendReports send_reports_;
   Channel channel_;
   ApplicationLayer application_;
   std::optional<NeighborTables> neighbors_;  // network.neighbors.enabled

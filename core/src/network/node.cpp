@@ -29,6 +29,10 @@ void Node::attach() {
 }
 
 void Node::drop(const Packet& packet, DropReason reason) {
+  if (services_.send_reports.awaiting()) {
+    services_.send_reports.met(id_, packet, SendOutcome::dropped, services_.scheduler.now(),
+                               kNoNode, 0, reason);
+  }
   services_.metrics.dropped(reason);
   services_.trace.record(services_.scheduler.now(), PacketEvent::drop, id_, packet,
                          to_string(reason));
@@ -57,6 +61,11 @@ void Node::MacPort::count(std::string_view counter, std::uint64_t amount) {
 }
 
 void Node::MacPort::transmit(Frame frame, SimTime duration) {
+  SendReports& reports = node_.services_.send_reports;
+  if (reports.awaiting() && frame.type == FrameType::data && frame.packet &&
+      (frame.receiver == kBroadcast || !node_.mac_->acknowledges_unicasts())) {
+    reports.met(node_.id_, *frame.packet, SendOutcome::sent, now(), frame.receiver);
+  }
   node_.services_.metrics.frame_transmitted(frame.size_bytes());
   node_.services_.frames.record(node_.services_.scheduler.now(), node_.id_, frame);
   node_.services_.channel.transmit(node_.id_, std::move(frame), duration);
@@ -84,6 +93,13 @@ void Node::MacPort::drop(const Packet& packet, DropReason reason) {
     return;
   }
   node_.drop(packet, reason);
+}
+
+void Node::MacPort::acknowledged(const Packet& packet, NodeId next_hop, std::uint32_t attempts) {
+  SendReports& reports = node_.services_.send_reports;
+  if (reports.awaiting()) {
+    reports.met(node_.id_, packet, SendOutcome::acknowledged, now(), next_hop, attempts);
+  }
 }
 
 // ---- RoutingPort ------------------------------------------------------------------------------

@@ -9,7 +9,11 @@
 //   routing.send_to_mac()   -> ARP (network.arp: ns3) for a unicast next hop, then mac.enqueue()
 //   mac.deliver()           -> ARP packets to ARP; others: packet.hops + 1, then routing.receive()
 //   routing.deliver()       -> application layer
-//   drop() from either      -> packet trace "drop" and packets.dropped.<reason>
+//   drop() from either      -> packet trace "drop" and packets.dropped.<reason>; the sender's
+//                              send report if the node is the message's source
+//   mac.acknowledged()      -> the sender's send report (acknowledged)
+//   mac.transmit() of a source's own broadcast (or unicast, under a MAC that acknowledges
+//                              nothing) -> the sender's send report (sent)
 //   count() from either     -> mac.<counter> or routing.<counter> in the report
 #pragma once
 
@@ -29,6 +33,7 @@
 #include "network/packet_uid_source.hpp"
 #include "network/phy.hpp"
 #include "network/scheduler.hpp"
+#include "network/send_reports.hpp"
 #include "plugin/plugin_instance.hpp"
 #include "swarmnet/mac.hpp"
 #include "swarmnet/routing.hpp"
@@ -44,6 +49,7 @@ struct NodeServices {
   FrameTraceWriter& frames;
   NetworkMetrics& metrics;
   PacketUidSource& packet_uids;
+  SendReports& send_reports;            // told of this node's own messages' outcomes
   std::uint64_t phy_seed = 0;           // node i's PHY draws from derive_seed(phy_seed, {i})
   std::uint64_t arp_seed = 0;           // node i's ARP jitter draws from derive_seed(arp_seed, {i})
   NeighborTables* neighbors = nullptr;  // network.neighbors: told of every decoded frame
@@ -102,6 +108,7 @@ class Node final : private PhyListener {
     void deliver(Packet packet, NodeId from) override;
     void link_failed(const Packet& packet, NodeId next_hop) override;
     void drop(const Packet& packet, DropReason reason) override;
+    void acknowledged(const Packet& packet, NodeId next_hop, std::uint32_t attempts) override;
   };
 
   class RoutingPort final : public Port<RoutingContext> {

@@ -56,6 +56,13 @@ void Ns3NetworkEngine::check_batch(const StepBatch& batch) const {
       throw std::invalid_argument("message " + std::to_string(message.message_id) +
                                   " names a robot that does not exist");
     }
+    if (message.hop_limit != 0 || message.report) {
+      throw std::invalid_argument(
+          "robot " + std::to_string(message.source) + "'s message " +
+          std::to_string(message.message_id) + " asks for " +
+          (message.report ? "a send report" : "a hop limit") +
+          " (SendOptions); network.engine: ns3 gives neither: run it with the native engine");
+    }
   }
 }
 

@@ -39,6 +39,8 @@ const char* to_string(RecordType type) {
       return "failure";
     case RecordType::neighbors:
       return "neighbors";
+    case RecordType::send_report:
+      return "send_report";
     case RecordType::hello:
       return "hello";
     case RecordType::welcome:
@@ -144,6 +146,37 @@ ProtocolResult StepChannel::receive_neighbors(RecordReader& reader, StepResult& 
   return {};
 }
 
+ProtocolResult StepChannel::send_send_report(const AddressedSendReport& addressed) {
+  const SendReport& r = addressed.report;
+  return send_record("send_report", false, RecordType::send_report, r.message_id, addressed.source,
+                     addressed.port, r.outcome, r.reason, r.at.count(), r.next_hop, r.attempts);
+}
+
+ProtocolResult StepChannel::receive_send_report(RecordReader& reader, StepResult& result) {
+  AddressedSendReport addressed;
+  SendReport& r = addressed.report;
+  std::int64_t at = 0;
+  if (!reader.get(r.message_id) || !reader.get(addressed.source) || !reader.get(addressed.port) ||
+      !reader.get(r.outcome) || !reader.get(r.reason) || !reader.get(at) ||
+      !reader.get(r.next_hop) || !reader.get(r.attempts) || !reader.at_end()) {
+    return malformed(RecordType::send_report);
+  }
+  const auto owed = reports_owed_.find(r.message_id);
+  if (owed == reports_owed_.end() || owed->second.source != addressed.source ||
+      owed->second.port != addressed.port) {
+    return over_limit("sent a report on message " + std::to_string(r.message_id) + " from robot " +
+                      std::to_string(addressed.source) + " port " + std::to_string(addressed.port) +
+                      ", which asked for none there or was reported already");
+  }
+  if (r.outcome > SendOutcome::dropped || r.reason > DropReason::arp_unresolved) {
+    return malformed(RecordType::send_report);
+  }
+  reports_owed_.erase(owed);
+  r.at = SimTime{at};
+  result.send_reports.push_back(addressed);
+  return {};
+}
+
 ProtocolResult StepChannel::sent(const char* what, IoStatus status, bool last_of_batch) {
   if (status == IoStatus::ok && last_of_batch) status = transport_.flush();
   if (status == IoStatus::ok) return {};
@@ -161,7 +194,7 @@ ProtocolResult StepChannel::receive(RecordType& type, RecordReader*& reader) {
   }
   reader_.emplace(in_);
   std::uint32_t raw = 0;
-  if (!reader_->get(raw) || raw < 1 || raw > static_cast<std::uint32_t>(RecordType::neighbors)) {
+  if (!reader_->get(raw) || raw < 1 || raw > static_cast<std::uint32_t>(RecordType::send_report)) {
     return {IoStatus::corrupt,
             "malformed record from " + peer_ + ": unknown record type " + std::to_string(raw)};
   }
@@ -268,6 +301,7 @@ void StepChannel::fix_limits(const Welcome& welcome) {
   limits_.step_ns = welcome.step_ns;
   limits_.max_neighbors = std::min(welcome.max_neighbors, kMaxNeighborsPerRobot);
   deliveries_owed_ = 0;
+  reports_owed_.clear();
   next_step_ = 0;
 }
 
@@ -289,8 +323,10 @@ ProtocolResult StepChannel::send_batch(const StepBatch& batch) {
   }
   for (const AppMessage& message : batch.messages) {
     deliveries_owed_ += message.destination == kBroadcast ? limits_.robots : 1U;
+    if (message.report) reports_owed_[message.message_id] = {message.source, message.port};
     if (auto r = send_record("message", false, RecordType::message, message.message_id,
-                             message.source, message.destination, message.port,
+                             message.source, message.destination, message.port, message.hop_limit,
+                             static_cast<std::uint8_t>(message.report),
                              std::span<const std::byte>(message.payload));
         !r.ok()) {
       return r;
@@ -373,11 +409,14 @@ ProtocolResult StepChannel::receive_batch(StepBatch& batch, bool& finished) {
   for (AppMessage& message : batch.messages) {
     if (auto r = receive(type, reader); !r.ok()) return r;
     if (type != RecordType::message) return unexpected(type, "message");
+    std::uint8_t report = 0;
     if (!reader->get(message.message_id) || !reader->get(message.source) ||
         !reader->get(message.destination) || !reader->get(message.port) ||
+        !reader->get(message.hop_limit) || !reader->get(report) || report > 1 ||
         !reader->get_bytes(message.payload, kMaxPayloadBytes) || !reader->at_end()) {
       return malformed(type);
     }
+    message.report = report == 1;
     payload_bytes += message.payload.size();
     if (payload_bytes > step_payload_limit_) {
       batch.messages.clear();  // give the memory back before the failure is reported
@@ -418,6 +457,9 @@ ProtocolResult StepChannel::send_result(const StepResult& result) {
       if (auto r = send_neighbors(robot, table); !r.ok()) return r;
     }
   }
+  for (const AddressedSendReport& report : result.send_reports) {
+    if (auto r = send_send_report(report); !r.ok()) return r;
+  }
   return send_record("step_done", true, RecordType::step_done, result.step, result.events,
                      static_cast<std::uint32_t>(result.deliveries.size()));
 }
@@ -428,6 +470,7 @@ ProtocolResult StepChannel::receive_result(StepResult& result) {
   std::size_t count_so_far = 0;
   std::int64_t last_table = -1;  // the robot whose neighbour table came last
   result.neighbors.clear();
+  result.send_reports.clear();
   result.neighbor_counts.assign(limits_.max_neighbors == 0 ? 0 : limits_.robots, 0);
   for (;;) {
     RecordType type{};
@@ -456,8 +499,12 @@ ProtocolResult StepChannel::receive_result(StepResult& result) {
       if (auto r = receive_neighbors(*reader, result, last_table); !r.ok()) return r;
       continue;
     }
+    if (type == RecordType::send_report) {
+      if (auto r = receive_send_report(*reader, result); !r.ok()) return r;
+      continue;
+    }
     if (type != RecordType::step_done) {
-      return unexpected(type, "delivery, neighbors or step_done");
+      return unexpected(type, "delivery, neighbors, send_report or step_done");
     }
     result.deliveries.resize(count_so_far);
     std::uint32_t count = 0;

@@ -4,12 +4,13 @@
 // per application message, step_end. At the end: finish.
 // Network half -> robot half, per step: one delivery record per delivery, with
 // network.neighbors one neighbors record per robot whose table is not empty (ascending robot),
-// step_done. After
+// one send_report record per report (in the order the outcomes happened), step_done. After
 // finish: report (the network's metrics, a NetworkReport).
 // Either side may send failure (a text) before it stops, so the other can say why.
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -35,7 +36,8 @@ enum class RecordType : std::uint32_t {
   failure = 9,
   hello = 10,
   welcome = 11,
-  neighbors = 12,  // the last: StepChannel::receive refuses any type beyond it
+  neighbors = 12,
+  send_report = 13,  // the last: StepChannel::receive refuses any type beyond it
 };
 
 // What the handshake fixes, so that every count a peer announces later is checked before
@@ -52,8 +54,9 @@ struct ProtocolLimits {
 inline constexpr std::uint32_t kMaxRobots = 100000;
 
 // Version of the records above; both halves must speak the same one.
-// 4: the report's arp counters. 5: neighbour tables (the welcome's max_neighbors).
-inline constexpr std::uint32_t kStepProtocolVersion = 5;
+// 4: the report's arp counters. 5: neighbour tables (the welcome's max_neighbors). 6: send
+// options in message records, send_report records.
+inline constexpr std::uint32_t kStepProtocolVersion = 6;
 
 // The handshake (the study's Fig. 1). The robot half's hello carries exactly one description of
 // what to simulate, the resolved scenario; the network half validates it and answers with a
@@ -138,6 +141,8 @@ class StepChannel {
   ProtocolResult send_neighbors(RobotId robot, std::span<const RadioNeighbor> table);
   ProtocolResult receive_neighbors(RecordReader& reader, StepResult& result,
                                    std::int64_t& last_robot);
+  ProtocolResult send_send_report(const AddressedSendReport& addressed);
+  ProtocolResult receive_send_report(RecordReader& reader, StepResult& result);
   ProtocolResult sent(const char* what, IoStatus status, bool last_of_batch);
   ProtocolResult receive(RecordType& type, RecordReader*& reader);
   ProtocolResult malformed(RecordType type) const;
@@ -153,6 +158,13 @@ class StepChannel {
   // Deliveries the messages sent so far can still produce (one per unicast message, one per
   // robot per broadcast): a network half that sends more is refused before it is buffered.
   std::uint64_t deliveries_owed_ = 0;
+  // Robot side: the messages sent with SendOptions::report and not reported yet, and from
+  // where; a report for any other message is refused.
+  struct Reported {
+    RobotId source;
+    std::uint16_t port;
+  };
+  std::map<std::uint64_t, Reported> reports_owed_;
   std::uint64_t next_step_ = 0;  // the step number the next step_begin must carry
   std::uint64_t step_payload_limit_ = ~std::uint64_t{0};
 };

@@ -10,6 +10,7 @@
 #include "swarmnet/packet.hpp"
 #include "swarmnet/radio_neighbor.hpp"
 #include "swarmnet/random.hpp"
+#include "swarmnet/send_report.hpp"
 #include "swarmnet/units.hpp"
 #include "swarmnet/vector.hpp"
 
@@ -29,6 +30,8 @@ struct AppMessage {
   RobotId destination = kBroadcast;
   std::uint16_t port = 0;  // the sending controller's, and so the receiving one's
   Payload payload;
+  std::uint8_t hop_limit = 0;  // SendOptions::hop_limit
+  bool report = false;         // SendOptions::report: the sender wants its SendReport
 };
 
 // Robot half -> network half: step `step` covers [start, start + step length).
@@ -52,6 +55,13 @@ struct Delivery {
   Payload payload;
 };
 
+// A SendReport and the controller it is for: the port of robot `source` that sent the message.
+struct AddressedSendReport {
+  RobotId source = kNoNode;
+  std::uint16_t port = 0;
+  SendReport report;
+};
+
 // Network half -> robot half, after simulating a step's window.
 struct StepResult {
   std::uint64_t step = 0;
@@ -61,6 +71,9 @@ struct StepResult {
   // 0..i-1, ascending by id, as at the window's end. Both empty when the scenario keeps none.
   std::vector<std::uint32_t> neighbor_counts;
   std::vector<RadioNeighbor> neighbors;
+  // Reports on messages sent with SendOptions::report whose outcome fell in the window, in the
+  // order the outcomes happened.
+  std::vector<AddressedSendReport> send_reports;
 };
 
 }  // namespace swarmnet

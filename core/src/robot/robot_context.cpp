@@ -39,7 +39,16 @@ void WorldRobotContext::set_wheel_speeds(double left_mps, double right_mps) {
   body.right_mps = clamp_speed(right_mps, body.max_speed_mps);
 }
 
-std::uint64_t WorldRobotContext::send(RobotId destination, std::span<const std::byte> payload) {
+std::span<const SendReport> WorldRobotContext::send_reports() const {
+  const std::size_t slot = id_ * state_->ports.size() + state_->current_port_index;
+  const auto& slots = state_->send_report_slots;
+  const auto [first, last] = std::equal_range(slots.begin(), slots.end(), slot);
+  return {state_->send_reports.data() + (first - slots.begin()),
+          static_cast<std::size_t>(last - first)};
+}
+
+std::uint64_t WorldRobotContext::send(RobotId destination, std::span<const std::byte> payload,
+                                      const SendOptions& options) {
   if (payload.size() > kMaxPayloadBytes) {
     throw std::invalid_argument("robot " + std::to_string(id_) + ": cannot send a payload of " +
                                 std::to_string(payload.size()) + " bytes; the limit is " +
@@ -63,7 +72,8 @@ std::uint64_t WorldRobotContext::send(RobotId destination, std::span<const std::
   }
   const std::uint64_t message_id = state_->next_message_id++;
   state_->outbox->push_back(AppMessage{message_id, id_, destination, state_->current_port,
-                                       Payload(payload.begin(), payload.end())});
+                                       Payload(payload.begin(), payload.end()), options.hop_limit,
+                                       options.report});
   return message_id;
 }
 

@@ -54,6 +54,11 @@ struct RobotWorldState {
   bool neighbors_enabled = false;
   std::vector<std::size_t> neighbor_first;  // robots + 1 offsets
   std::vector<RadioNeighbor> neighbors;
+  // Send reports for the next step's controllers: send_reports[i] is for the controllers of
+  // inbox slot send_report_slots[i] (robot * ports.size() + port index), slots ascending, each
+  // slot's reports in the order their outcomes happened.
+  std::vector<std::size_t> send_report_slots;
+  std::vector<SendReport> send_reports;
   ViewRecord view;  // what controllers and worlds asked the viewer to show
 };
 
@@ -79,6 +84,7 @@ class WorldRobotContext final : public RobotContext {
   }
   // Throws std::logic_error when the scenario keeps no neighbour tables.
   [[nodiscard]] std::span<const RadioNeighbor> neighbors() const override;
+  [[nodiscard]] std::span<const SendReport> send_reports() const override;
   [[nodiscard]] std::span<const double> reading(std::string_view name) const override;
 
   // Clamps each speed to +/- max_speed_mps; a NaN speed counts as 0 (stopping is the safe
@@ -86,7 +92,9 @@ class WorldRobotContext final : public RobotContext {
   void set_wheel_speeds(double left_mps, double right_mps) override;
   // Throws std::invalid_argument for a payload over kMaxPayloadBytes or a destination that is
   // neither a robot id nor kBroadcast.
-  std::uint64_t send(RobotId destination, std::span<const std::byte> payload) override;
+  using RobotContext::send;
+  std::uint64_t send(RobotId destination, std::span<const std::byte> payload,
+                     const SendOptions& options) override;
   void request(std::string_view name, std::span<const double> args) override;
   void record(std::string_view metric, double value) override;
   void show_state(std::string_view label) override;

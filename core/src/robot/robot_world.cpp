@@ -159,6 +159,27 @@ void RobotWorld::set_neighbor_tables(std::span<const std::uint32_t> counts,
                                                                  state_.neighbor_first[robots]));
 }
 
+void RobotWorld::set_send_reports(std::span<const AddressedSendReport> reports) {
+  state_.send_report_slots.clear();
+  state_.send_reports.clear();
+  if (reports.empty()) return;
+  const std::size_t ports = state_.ports.size();
+  std::vector<std::pair<std::size_t, const SendReport*>> addressed;
+  addressed.reserve(reports.size());
+  for (const AddressedSendReport& r : reports) {
+    const std::size_t k = port_index(r.port);
+    if (r.source >= state_.bodies.size() || k == ports || state_.ports[k] != r.port) continue;
+    addressed.emplace_back(r.source * ports + k, &r.report);
+  }
+  // Stable: a slot's reports keep the order their outcomes happened in.
+  std::stable_sort(addressed.begin(), addressed.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [slot, report] : addressed) {
+    state_.send_report_slots.push_back(slot);
+    state_.send_reports.push_back(*report);
+  }
+}
+
 void RobotWorld::step(std::span<const Delivery> deliveries, std::vector<AppMessage>& sent) {
   fill_inboxes(deliveries);
   if (!sent_in_init_.empty()) {

@@ -71,6 +71,10 @@ class RobotWorld {
   void set_neighbor_tables(std::span<const std::uint32_t> counts,
                            std::span<const RadioNeighbor> entries);
 
+  // The send reports the next step's controllers see (StepResult::send_reports); one for a
+  // robot or port no controller entry has is ignored.
+  void set_send_reports(std::span<const AddressedSendReport> reports);
+
   // True once a world plugin said its task is done: the run ends after the step that did it.
   [[nodiscard]] bool task_done() const { return worlds_->done_by().has_value(); }
   // The world plugin whose task_done() ended the run, if one did.

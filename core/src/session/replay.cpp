@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -43,43 +44,85 @@ std::uint64_t parse_unsigned(const std::string& field, const std::string& where)
   return value;
 }
 
-// traffic.csv (run/traffic_schedule.hpp), in file order (= send order within each step).
-std::vector<TrafficRow> read_traffic(const std::filesystem::path& path) {
+// Calls `row(fields, where)` for each non-empty line of the CSV file `path` after its header,
+// which must be `header`; every line must have `field_count` fields. `what` names the file kind
+// in the refusal of another header; `where` is "path:line".
+template <typename Row>
+void read_csv(const std::filesystem::path& path, const char* header, const char* what,
+              std::size_t field_count, Row row) {
   std::ifstream in(path);
   if (!in) throw RunError("cannot open " + path.string());
   std::string line;
   std::getline(in, line);
-  if (line != "message_id,step,inject_ns,source,destination,payload_bytes") {
-    throw RunError(path.string() + ":1: not a SwarmNet traffic schedule (unexpected header)");
+  if (line != header) {
+    throw RunError(path.string() + ":1: not a SwarmNet " + what + " (unexpected header)");
   }
-  std::vector<TrafficRow> rows;
   std::size_t number = 1;
+  std::vector<std::string> fields;
   while (std::getline(in, line)) {
     ++number;
     if (line.empty()) continue;
     const std::string where = path.string() + ":" + std::to_string(number);
-    std::vector<std::string> fields;
+    fields.clear();
     std::stringstream cells(line);
     std::string cell;
     while (std::getline(cells, cell, ',')) fields.push_back(cell);
-    if (fields.size() != 6) throw RunError(where + ": expected 6 fields");
-    TrafficRow row;
-    row.message.message_id = parse_unsigned(fields[0], where);
-    row.step = parse_unsigned(fields[1], where);
-    row.inject_ns = static_cast<std::int64_t>(parse_unsigned(fields[2], where));
-    row.message.source = static_cast<RobotId>(parse_unsigned(fields[3], where));
-    row.message.destination = fields[4] == "broadcast"
-                                  ? kBroadcast
-                                  : static_cast<RobotId>(parse_unsigned(fields[4], where));
-    const std::uint64_t bytes = parse_unsigned(fields[5], where);
-    if (bytes > kMaxPayloadBytes) throw RunError(where + ": payload larger than the maximum");
-    row.message.payload.assign(bytes, std::byte{0});
-    if (!rows.empty() && row.step < rows.back().step) {
-      throw RunError(where + ": steps are not in ascending order");
+    if (fields.size() != field_count) {
+      throw RunError(where + ": expected " + std::to_string(field_count) + " fields");
     }
-    rows.push_back(std::move(row));
+    row(fields, where);
   }
+}
+
+// traffic.csv (run/traffic_schedule.hpp), in file order (= send order within each step).
+std::vector<TrafficRow> read_traffic(const std::filesystem::path& path) {
+  std::vector<TrafficRow> rows;
+  read_csv(path, "message_id,step,inject_ns,source,destination,payload_bytes", "traffic schedule",
+           6, [&](const std::vector<std::string>& fields, const std::string& where) {
+             TrafficRow row;
+             row.message.message_id = parse_unsigned(fields[0], where);
+             row.step = parse_unsigned(fields[1], where);
+             row.inject_ns = static_cast<std::int64_t>(parse_unsigned(fields[2], where));
+             row.message.source = static_cast<RobotId>(parse_unsigned(fields[3], where));
+             row.message.destination = fields[4] == "broadcast"
+                                           ? kBroadcast
+                                           : static_cast<RobotId>(parse_unsigned(fields[4], where));
+             const std::uint64_t bytes = parse_unsigned(fields[5], where);
+             if (bytes > kMaxPayloadBytes)
+               throw RunError(where + ": payload larger than the maximum");
+             row.message.payload.assign(bytes, std::byte{0});
+             if (!rows.empty() && row.step < rows.back().step) {
+               throw RunError(where + ": steps are not in ascending order");
+             }
+             rows.push_back(std::move(row));
+           });
   return rows;
+}
+
+// send_options.csv (outputs/traffic_schedule.hpp) beside `traffic`, applied to the messages it
+// names; absent when no message of the run had options.
+void apply_send_options(const std::filesystem::path& traffic, std::vector<TrafficRow>& rows) {
+  const std::filesystem::path path = traffic.parent_path() / kSendOptionsFile;
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return;
+  std::map<std::uint64_t, TrafficRow*> by_id;
+  for (TrafficRow& row : rows) by_id[row.message.message_id] = &row;
+  read_csv(path, "message_id,hop_limit,report", "send options file", 3,
+           [&](const std::vector<std::string>& fields, const std::string& where) {
+             const std::uint64_t id = parse_unsigned(fields[0], where);
+             const std::uint64_t hop_limit = parse_unsigned(fields[1], where);
+             const std::uint64_t report = parse_unsigned(fields[2], where);
+             if (hop_limit > 255 || report > 1) {
+               throw RunError(where + ": hop_limit is 0 to 255 and report 0 or 1");
+             }
+             const auto row = by_id.find(id);
+             if (row == by_id.end()) {
+               throw RunError(where + ": message " + std::to_string(id) + " is not in " +
+                              traffic.string());
+             }
+             row->second->message.hop_limit = static_cast<std::uint8_t>(hop_limit);
+             row->second->message.report = report == 1;
+           });
 }
 
 }  // namespace
@@ -95,7 +138,8 @@ ReplayOutcome replay_network(const ReplayInputs& inputs, const std::filesystem::
   const Scenario scenario =
       load_scenario_text(read_text_file(inputs.scenario), inputs.scenario.string(), loader);
   const PositionsTrace positions = read_positions_trace(inputs.positions);
-  const std::vector<TrafficRow> traffic = read_traffic(inputs.traffic);
+  std::vector<TrafficRow> traffic = read_traffic(inputs.traffic);
+  apply_send_options(inputs.traffic, traffic);
   const SimTime step = from_seconds(scenario.step_s);
   // Fewer steps than the scenario's only when a world plugin may have ended the run early.
   const bool may_end_early = !scenario.worlds.empty();

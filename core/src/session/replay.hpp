@@ -14,7 +14,7 @@ namespace swarmnet {
 struct ReplayInputs {
   std::filesystem::path scenario;   // scenario.resolved.yaml
   std::filesystem::path positions;  // positions.bin
-  std::filesystem::path traffic;    // traffic.csv
+  std::filesystem::path traffic;    // traffic.csv; send_options.csv beside it is read if present
   // The inputs of the run in `run_dir` (its resolved scenario, positions.bin and traffic.csv).
   static ReplayInputs from_run_dir(const std::filesystem::path& run_dir);
 };

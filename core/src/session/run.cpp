@@ -124,6 +124,7 @@ NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, Step
       receive(step - lag);
       deliveries = &result.deliveries;
       world.set_neighbor_tables(result.neighbor_counts, result.neighbors);
+      world.set_send_reports(result.send_reports);
     }
     batch.step = step;
     batch.start = world.now();
@@ -209,10 +210,15 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
       objects.emplace(objects_file->stream(), from_seconds(scenario.step_s));
     }
     std::optional<AtomicFile> traffic_file;
+    std::optional<AtomicFile> send_options_file;  // only once a message had options
     std::optional<TrafficScheduleWriter> traffic;
     if (scenario.output.traffic_schedule) {
       traffic_file.emplace(outcome.dir / kTrafficScheduleFile);
-      traffic.emplace(traffic_file->stream(), scenario.seed, from_seconds(scenario.step_s));
+      traffic.emplace(traffic_file->stream(), scenario.seed, from_seconds(scenario.step_s),
+                      [&]() -> std::ostream& {
+                        send_options_file.emplace(outcome.dir / kSendOptionsFile);
+                        return send_options_file->stream();
+                      });
     }
 
     for (const std::string& name : remove_stale_segments()) {
@@ -279,6 +285,7 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
     if (headings_file) commit.add(*headings_file);
     if (objects_file) commit.add(*objects_file);
     if (traffic_file) commit.add(*traffic_file);
+    if (send_options_file) commit.add(*send_options_file);
     std::optional<AtomicFile> view_file;
     if (!world.view_record().empty()) {
       view_file.emplace(outcome.dir / kViewStatesFile);

@@ -325,6 +325,7 @@ void Dcf80211::exchange_failed() {
   if (timeout_timer_ != kNoTimer) context_->cancel(timeout_timer_);
   timeout_timer_ = kNoTimer;
   context_->count(stage == Await::cts ? "cts_timeouts" : "ack_timeouts");
+  ++exchange_->failed_attempts;
   access_.busy_until(now());
   RetryCounts& counts = retry_counts();
   const bool long_count = stage == Await::ack && exchange_->use_rts;
@@ -431,6 +432,8 @@ void Dcf80211::on_receive(const Frame& frame, const RxInfo& /*info*/) {
         if (station_retry_counts_) {  // ns-3's ReportDataOk
           (exchange_->use_rts ? station_retries_.long_count : station_retries_.short_count) = 0;
         }
+        context_->acknowledged(exchange_->packet, exchange_->next_hop,
+                               exchange_->failed_attempts + 1);
         exchange_finished();
         return;
       }

@@ -24,6 +24,8 @@ class Dcf80211 final : public Mac {
   explicit Dcf80211(const PluginArgs& args);
 
   void attach(MacContext& context) override;
+  // An ACK ends every unicast exchange: MacContext::acknowledged() reports it.
+  [[nodiscard]] bool acknowledges_unicasts() const override { return true; }
   void enqueue(Packet packet, NodeId next_hop) override;
   void on_transmit_end() override;
   void on_receive(const Frame& frame, const RxInfo& info) override;
@@ -52,6 +54,7 @@ class Dcf80211 final : public Mac {
     std::uint16_t sequence;
     bool use_rts;
     RetryCounts retries{};
+    std::uint32_t failed_attempts = 0;  // RTS or data attempts that went unanswered
     bool retry = false;
     bool in_progress = false;  // an attempt is on the air or awaiting its response
     // Its lifetime ran out during an attempt (mpdu_lifetime: ns3): it was reported dropped and

@@ -115,8 +115,10 @@ PluginInfo Aodv::info() {
       "0.3 * net_diameter hops of the destination buffers it and searches once with TTL "
       "max(route hops, hops from source / 2) + local_add_ttl before reporting the break. "
       "Application broadcasts are rebroadcast with duplicate detection while their hop count is "
-      "below data_ttl (enable_broadcast). Data packets carry no AODV header; a unicast packet "
-      "that has travelled data_ttl hops is dropped as ttl_expired, one without a route at a relay "
+      "below data_ttl (enable_broadcast) and their sender's hop limit "
+      "(SendOptions::hop_limit). Data packets carry no AODV header; a unicast packet that has "
+      "travelled data_ttl hops, or its sender's hop limit, is dropped as ttl_expired, one without "
+      "a route at a relay "
       "as no_route (with a RERR to its source). Control messages have their RFC sizes; the "
       "RREQ's reserved byte carries its TTL. Counters (routing.*): control_rreq, control_rrep, "
       "control_rerr, control_rrep_ack, control_hello (transmissions, originated or relayed), "
@@ -267,13 +269,17 @@ void Aodv::deliver_broadcast(Packet packet) {
     return;
   }
   context_->deliver(packet);
-  if (!params_.enable_broadcast || packet.hops >= params_.data_ttl) return;
+  // The sender's hop limit (Packet::hop_limit) ends a broadcast's scope as data_ttl does.
+  if (!params_.enable_broadcast || packet.hops >= params_.data_ttl ||
+      !packet.may_travel_further()) {
+    return;
+  }
   context_->trace_forward(packet);
   context_->send_to_mac(std::move(packet), kBroadcast);
 }
 
 void Aodv::forward_data(Packet packet) {
-  if (packet.hops >= params_.data_ttl) {
+  if (packet.hops >= params_.data_ttl || !packet.may_travel_further()) {
     context_->drop(packet, DropReason::ttl_expired);
     return;
   }

@@ -15,7 +15,10 @@ PluginInfo Flooding::info() {
       "destination of a unicast packet delivers it and does not relay it; for a broadcast packet "
       "every node delivers it and relays it; any other node relays it. Relaying decrements the "
       "ttl; a packet whose ttl would reach 0 is dropped (ttl_expired) instead, so a packet "
-      "travels at most `ttl` hops. A relay waits a delay drawn uniformly from [0, jitter_max_s] "
+      "travels at most `ttl` hops. A packet that has crossed its sender's hop limit "
+      "(SendOptions::hop_limit) is relayed no further: a broadcast is then delivered and left "
+      "there, a unicast for another node dropped as ttl_expired. A relay waits a delay drawn "
+      "uniformly from [0, jitter_max_s] "
       "from the node's own random stream before it is handed to the MAC, to spread neighbours' "
       "rebroadcasts. Later copies are discarded (counted as routing.duplicates); packets with a "
       "header of the wrong size are discarded as routing.malformed.",
@@ -59,6 +62,12 @@ void Flooding::receive(Packet packet, NodeId /*from*/) {
     return;
   }
   if (packet.destination == kBroadcast) context_->deliver(packet);
+  if (!packet.may_travel_further()) {
+    // The sender's hop limit: a broadcast has reached its scope; a unicast cannot reach its
+    // destination.
+    if (packet.destination != kBroadcast) context_->drop(packet, DropReason::ttl_expired);
+    return;
+  }
   if (header->ttl <= 1) {
     context_->drop(packet, DropReason::ttl_expired);
     return;

@@ -119,6 +119,12 @@ class FakeMacContext final : public FakeNode<MacContext> {
   };
   std::vector<Failure> link_failures;  // link_failed() calls
   std::vector<Dropped> dropped;        // drop() calls
+  struct Acknowledgement {
+    Packet packet;
+    NodeId next_hop;
+    std::uint32_t attempts;
+  };
+  std::vector<Acknowledgement> acknowledgements;  // acknowledged() calls
   std::uint64_t next_frame_uid = 1;
 
   void transmit(Frame frame, SimTime duration) override {
@@ -135,6 +141,9 @@ class FakeMacContext final : public FakeNode<MacContext> {
   }
   void drop(const Packet& packet, DropReason reason) override {
     dropped.push_back({packet, reason});
+  }
+  void acknowledged(const Packet& packet, NodeId next_hop, std::uint32_t attempts) override {
+    acknowledgements.push_back({packet, next_hop, attempts});
   }
 };
 

@@ -25,6 +25,7 @@ class FakeRobotContext final : public RobotContext {
     RobotId destination;
     std::vector<std::byte> payload;
     SimTime at;
+    SendOptions options;
   };
   struct Request {
     std::string name;
@@ -50,6 +51,9 @@ class FakeRobotContext final : public RobotContext {
   // neighbors_enabled false, neighbors() refuses as the kernel does when the scenario has none.
   std::vector<RadioNeighbor> radio_neighbors;
   bool neighbors_enabled = true;
+  // What send_reports() returns: the test writes the reports the network half would (message
+  // ids as send() returned them: indices into `sent`).
+  std::vector<SendReport> reports;
   // World readings by name, as a world plugin would offer them (swarmnet/world.hpp).
   std::map<std::string, std::vector<double>, std::less<>> readings;
   // Requests the world offers; when not empty, request() refuses any other name, as the kernel
@@ -101,14 +105,17 @@ class FakeRobotContext final : public RobotContext {
     left_mps = std::clamp(left, -max_speed, max_speed);
     right_mps = std::clamp(right, -max_speed, max_speed);
   }
-  std::uint64_t send(RobotId destination, std::span<const std::byte> payload) override {
+  using RobotContext::send;
+  std::uint64_t send(RobotId destination, std::span<const std::byte> payload,
+                     const SendOptions& options) override {
     if (payload.size() > kMaxPayloadBytes) {
       throw std::invalid_argument("payload of " + std::to_string(payload.size()) +
                                   " bytes exceeds kMaxPayloadBytes");
     }
-    sent.push_back({destination, {payload.begin(), payload.end()}, time});
+    sent.push_back({destination, {payload.begin(), payload.end()}, time, options});
     return sent.size() - 1;
   }
+  [[nodiscard]] std::span<const SendReport> send_reports() const override { return reports; }
   void record(std::string_view metric, double value) override {
     auto it = recorded.find(metric);
     if (it == recorded.end())
