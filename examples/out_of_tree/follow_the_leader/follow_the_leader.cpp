@@ -12,6 +12,9 @@ using namespace swarmnet;
 
 namespace {
 
+// A follower's fastest turn, rad/s: a half turn takes about 1.6 s.
+constexpr double kMaxTurnRateRadS = 2.0;
+
 // A beacon: the leader's x and y in metres, as two doubles.
 std::array<std::byte, 16> encode(const Vec2& p) {
   std::array<std::byte, 16> bytes{};
@@ -32,12 +35,14 @@ std::optional<Vec2> decode(const std::vector<std::byte>& bytes) {
 PluginInfo FollowTheLeader::info() {
   return PluginInfo{
       "follow_the_leader",
-      "1.0.0",
+      "1.1.0",
       "One robot leads and beacons its position; the others drive towards it",
       "Robot `leader` drives a wide circle at speed_fraction of its top speed and broadcasts its "
       "position (16 bytes) every beacon_interval_s. Every other robot turns towards the last "
-      "beaconed position it received and drives there, stopping within follow_distance_m; "
-      "without news it waits. Metrics: distance_to_leader_m (each follower, each step, once it "
+      "beaconed position it received (by half its heading error a step, at most 2 rad/s, "
+      "slowing down as much as it faces away) and drives there, stopping within "
+      "follow_distance_m; without news it waits. Metrics: distance_to_leader_m (each follower, "
+      "each step, once it "
       "has heard a beacon: distance to the leader's last known position) and beacon_age_s (age "
       "of each beacon received).",
       {
@@ -99,16 +104,19 @@ void FollowTheLeader::follow(RobotContext& robot) {
     robot.set_wheel_speeds(0.0, 0.0);
     return;
   }
+  // Heading error towards the leader, in [-pi, pi].
   const double error =
       std::remainder(std::atan2(to.y(), to.x()) - robot.heading_rad(), 2.0 * std::numbers::pi);
-  const double v = speed_fraction_ * robot.max_speed_mps();
-  if (std::abs(error) > 0.3) {  // turn in place first
-    const double turn = std::copysign(0.5 * v, error);
-    robot.set_wheel_speeds(-turn, turn);
-    return;
-  }
-  const double steer = std::clamp(error, -0.3, 0.3) * v;
-  robot.set_wheel_speeds(v - steer, v + steer);
+  // Turn by half the error this step, and by at most kMaxTurnRateRadS. A turn smaller than the
+  // error never overshoots, so the heading settles on the leader's bearing; one of more than
+  // twice the error would leave a larger error on the other side, and the robot would spin.
+  const double max_turn = kMaxTurnRateRadS * robot.step_s();
+  const double w = std::clamp(0.5 * error, -max_turn, max_turn) / robot.step_s();
+  // Forwards only as much as it faces the leader: facing away, it turns on the spot.
+  const double v = speed_fraction_ * robot.max_speed_mps() * std::max(0.0, std::cos(error));
+  // Turn rate w from the wheels (swarmnet/controller.hpp). Should the clamp to max_speed_mps()
+  // cut a wheel, the turn only gets smaller: still no overshoot.
+  robot.set_wheel_speeds(v - w * robot.axle_m() / 2.0, v + w * robot.axle_m() / 2.0);
 }
 
 }  // namespace example::follow_the_leader
