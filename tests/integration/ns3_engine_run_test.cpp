@@ -160,6 +160,24 @@ TEST(Ns3Engine, AMessageWithSendOptionsFailsTheRunByName) {
       << result.output;
 }
 
+TEST(Ns3Engine, ARouteQueryFailsTheRunByName) {
+  TempDir plugins;
+  std::filesystem::copy_file(
+      std::filesystem::path(SWARMNET_TEST_FIXTURE_DIR) / "swarmnet_route_probe.so",
+      plugins.path() / "swarmnet_route_probe.so");
+  TempDir dir;
+  const auto result =
+      run_swarmnet("run " + kScenario + kSmall + " --set plugin_paths=[" + plugins.path().string() +
+                   "] --set 'robots.controllers.1={plugin: route_probe}'"
+                   " --quiet --out " +
+                   (dir.path() / "run").string());
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find("robot 0 asks route_to(1) in step 0; network.engine: ns3 answers "
+                               "no route queries"),
+            std::string::npos)
+      << result.output;
+}
+
 TEST(Ns3Engine, WhatNs3CannotRunIsRefusedBeforeTheRunWithWhereAndWhy) {
   const std::vector<Refusal> refusals = {
       {"'network.mac={plugin: ideal_mac}'", "--set network.mac",

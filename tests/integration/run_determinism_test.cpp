@@ -150,6 +150,36 @@ TEST(RunDeterminism, EveryTransportGivesIdenticalSendReports) {
   EXPECT_TRUE(read_file(run / "packets.csv") == read_file(dir.path() / "replay" / "packets.csv"));
 }
 
+// Route queries cross with the batch and their answers with the result: a controller asking
+// route_to() every step (the route_probe fixture) reads the same answers on every transport, in
+// each sync mode, and asking changes no byte of what the network simulates.
+TEST(RunDeterminism, EveryTransportGivesIdenticalRouteAnswers) {
+  TempDir plugins;
+  copy_fixture(plugins, "route_probe");
+  const std::string stack =
+      " --seed 3 --set 'network.mac={plugin: dcf80211}'"
+      " --set 'network.routing={plugin: aodv}'";
+  const std::string probe = stack + " --set plugin_paths=[" + plugins.path().string() +
+                            "] --set 'robots.controllers.1={plugin: route_probe}'";
+  expect_identical_on_every_transport(probe);
+  TempDir dir;
+  run_into(dir.path() / "asked", probe);
+  const auto summary = nlohmann::json::parse(read_file(dir.path() / "asked" / "summary.json"));
+  const auto& controllers = summary["controllers"];
+  const double robots = summary["robots"].get<double>();
+  // Pending on the first step only (strict sync); then answers one window old, some valid.
+  EXPECT_EQ(controllers["route_pending"]["count"].get<double>(), robots) << controllers.dump();
+  EXPECT_GT(controllers["route_valid"]["count"].get<double>(), 0.0) << controllers.dump();
+  EXPECT_GE(controllers["route_hops"]["min"].get<double>(), 1.0);
+  EXPECT_EQ(controllers["route_age_s"]["min"].get<double>(), 0.0);  // the window just ended
+  EXPECT_EQ(controllers["route_age_s"]["max"].get<double>(), 0.0);
+
+  // The same run with a controller that sends alike and never asks: identical packets.
+  run_into(dir.path() / "quiet", probe + " --set 'robots.controllers.1.params.ask=false'");
+  EXPECT_TRUE(read_file(dir.path() / "asked" / "packets.csv") ==
+              read_file(dir.path() / "quiet" / "packets.csv"));
+}
+
 TEST(RunDeterminism, AnotherSeedGivesDifferentTraces) {
   TempDir a;
   TempDir b;

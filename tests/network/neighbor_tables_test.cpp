@@ -87,6 +87,37 @@ TEST(NeighborTables, AFullTableKeepsTheMostRecentlyHeard) {
   EXPECT_EQ(t.entries[1].id, 3U);
 }
 
+TEST(NeighborTables, UnicastExchangesCountIntoTheHeardNeighboursEntryAndAgeOut) {
+  NeighborSensing settings;
+  settings.window_s = 1.0;
+  NeighborTables tables(3, settings);
+  tables.heard(0, frame_from(1), RxInfo{-70.0, 20.0}, ms(100));
+  tables.exchange_ended(0, 1, true, 1, ms(200));   // first attempt
+  tables.exchange_ended(0, 1, true, 3, ms(300));   // third attempt
+  tables.exchange_ended(0, 1, false, 7, ms(900));  // given up
+  tables.exchange_ended(0, 2, true, 1, ms(400));   // 2 was never heard: no entry for it
+  Tables t = collect(tables, ms(1000));
+  ASSERT_EQ(t.counts[0], 1U);
+  EXPECT_EQ(t.entries[0].id, 1U);
+  EXPECT_EQ(t.entries[0].unicasts, 3U);
+  EXPECT_EQ(t.entries[0].first_attempt_acks, 1U);
+  ASSERT_TRUE(t.entries[0].first_attempt_ack_share().has_value());
+  EXPECT_DOUBLE_EQ(*t.entries[0].first_attempt_ack_share(), 1.0 / 3.0);
+  // Heard again at 1.05 s; by 1.25 s the exchanges at 0.2 s have left the window.
+  tables.heard(0, frame_from(1), RxInfo{-70.0, 20.0}, ms(1050));
+  t = collect(tables, ms(1250));
+  ASSERT_EQ(t.counts[0], 1U);
+  EXPECT_EQ(t.entries[0].unicasts, 2U);
+  EXPECT_EQ(t.entries[0].first_attempt_acks, 0U);
+  // Heard after its exchange with 0 left the window: an entry without any.
+  tables.heard(0, frame_from(2), RxInfo{-70.0, 20.0}, ms(1500));
+  t = collect(tables, ms(1950));
+  ASSERT_EQ(t.counts[0], 2U);
+  EXPECT_EQ(t.entries[0].unicasts, 0U);
+  EXPECT_FALSE(t.entries[0].first_attempt_ack_share().has_value());
+  EXPECT_EQ(t.entries[1].unicasts, 0U);
+}
+
 // Three robots on a line 100 m apart, 120 m disk: the ends hear only the middle one.
 TEST(NetworkNeighborTables, TheSimulatorListsTheNodesWhoseFramesThePhyDecoded) {
   PluginLoader loader;
@@ -119,6 +150,57 @@ TEST(NetworkNeighborTables, TheSimulatorListsTheNodesWhoseFramesThePhyDecoded) {
     simulator.run_step(quiet, result);
   }
   EXPECT_EQ(result.neighbor_counts, (std::vector<std::uint32_t>{0, 0, 0}));
+}
+
+// Robot 1 in the middle broadcasts (so that the others hear it) and receives unicasts: from 0
+// alone, or from 0 and 2, which cannot hear each other (a hidden terminal) and so collide at 1.
+struct ExchangeCounts {
+  std::uint32_t unicasts = 0;
+  std::uint32_t first_attempt_acks = 0;
+};
+
+ExchangeCounts exchanges_with_the_middle(bool hidden_terminal) {
+  PluginLoader loader;
+  NetworkSettings settings = test::make_settings(loader, 3, "dcf80211", "direct");
+  settings.network.neighbors.enabled = true;
+  settings.network.neighbors.window_s = 10.0;
+  settings.network.arp.reset();  // static ARP: every exchange is a data frame and its ACK
+  settings.network.phy.model = PhyModel::sinr;  // overlapping frames interfere
+  std::vector<StepBatch> batches =
+      test::fixed_batches(settings, test::line_positions(3, 100.0), 30, {});
+  std::uint64_t id = 0;
+  for (std::uint64_t step = 0; step < 20; ++step) {
+    batches[step].messages.push_back(test::message(id++, 1, kBroadcast, 50));
+    for (int k = 0; k < 8; ++k) {
+      batches[step].messages.push_back(test::message(id++, 0, 1, 1000));
+      if (hidden_terminal) batches[step].messages.push_back(test::message(id++, 2, 1, 1000));
+    }
+  }
+  NetworkSimulator simulator(settings, loader, nullptr);
+  StepResult result;
+  for (const StepBatch& batch : batches) simulator.run_step(batch, result);
+  ExchangeCounts counts;
+  // Robot 0's table is the first; robot 2's the last: both list robot 1 alone.
+  EXPECT_EQ(result.neighbor_counts[0], 1U);
+  EXPECT_EQ(result.neighbor_counts[2], 1U);
+  for (const RobotId table : {0U, 2U}) {
+    const std::size_t at = table == 0 ? 0 : result.neighbors.size() - 1;
+    const RadioNeighbor& middle = result.neighbors[at];
+    EXPECT_EQ(middle.id, 1U);
+    EXPECT_LE(middle.first_attempt_acks, middle.unicasts);
+    counts.unicasts += middle.unicasts;
+    counts.first_attempt_acks += middle.first_attempt_acks;
+  }
+  return counts;
+}
+
+TEST(NetworkNeighborTables, AHiddenTerminalsCollisionsShowInTheShareAcknowledgedAtFirstAttempt) {
+  const ExchangeCounts alone = exchanges_with_the_middle(false);
+  EXPECT_EQ(alone.unicasts, 160U);  // every exchange of robot 0 ended inside the 10 s window
+  EXPECT_EQ(alone.first_attempt_acks, alone.unicasts);
+  const ExchangeCounts hidden = exchanges_with_the_middle(true);
+  EXPECT_EQ(hidden.unicasts, 320U);  // retried until acknowledged or given up: each ends once
+  EXPECT_LT(hidden.first_attempt_acks, hidden.unicasts * 85 / 100);
 }
 
 TEST(NetworkNeighborTables, WithoutNetworkNeighborsNoTableIsKept) {

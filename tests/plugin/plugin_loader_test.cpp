@@ -91,6 +91,7 @@ class RecordingRobot final : public RobotContext {
     return 0;
   }
   [[nodiscard]] std::span<const SendReport> send_reports() const override { return {}; }
+  [[nodiscard]] Route route_to(RobotId /*destination*/) override { return Route{}; }
   void request(std::string_view /*name*/, std::span<const double> /*args*/) override {}
   void record(std::string_view metric, double value) override {
     records.emplace_back(std::string(metric), value);
@@ -293,7 +294,7 @@ TEST(PluginLoader, DiscoverListsPluginsByKindThenNameAndReportsBrokenFiles) {
             (std::vector<std::string>{
                 "physics kinematic2d", "propagation test_propagation", "mac ideal_mac",
                 "routing busy_routing", "routing test_routing", "controller busy_controller",
-                "controller neighbor_probe", "controller report_probe",
+                "controller neighbor_probe", "controller report_probe", "controller route_probe",
                 "controller test_controller", "controller world_probe", "world test_world"}));
 
   std::vector<std::string> broken_files;

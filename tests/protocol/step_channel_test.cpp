@@ -409,9 +409,9 @@ TEST_F(StepChannelBounds, NeighborTablesRoundTripAndAreCheckedAgainstTheHandshak
   network_.fix_limits(welcome);
   StepResult sent;
   sent.neighbor_counts = {2, 0, 1, 0};
-  sent.neighbors = {{1, SimTime{5}, -70.0, -71.0, 20.0, 3},
-                    {3, SimTime{6}, -80.0, -79.5, 10.0, 1},
-                    {0, SimTime{7}, -60.0, -60.0, 30.0, 2}};
+  sent.neighbors = {{1, SimTime{5}, -70.0, -71.0, 20.0, 3, 4, 2},
+                    {3, SimTime{6}, -80.0, -79.5, 10.0, 1, 0, 0},
+                    {0, SimTime{7}, -60.0, -60.0, 30.0, 2, 1, 1}};
   ASSERT_TRUE(network_.send_result(sent).ok());
   StepResult got;
   ASSERT_TRUE(robot_.receive_result(got).ok());
@@ -421,17 +421,24 @@ TEST_F(StepChannelBounds, NeighborTablesRoundTripAndAreCheckedAgainstTheHandshak
   EXPECT_EQ(got.neighbors[1].last_heard, SimTime{6});
   EXPECT_EQ(got.neighbors[1].rssi_smoothed_dbm, -79.5);
   EXPECT_EQ(got.neighbors[2].frames, 2U);
+  EXPECT_EQ(got.neighbors[0].unicasts, 4U);
+  EXPECT_EQ(got.neighbors[0].first_attempt_acks, 2U);
 
   // More entries than the handshake allows, an entry naming the robot itself, a table for a
-  // robot outside the swarm: each refused with the bound named.
+  // robot outside the swarm, more first-attempt acknowledgements than unicasts: each refused
+  // with the bound named.
   for (const auto& [robot, ids] :
        {std::pair<std::uint32_t, std::vector<std::uint32_t>>{0, {1, 2, 3}},
         std::pair<std::uint32_t, std::vector<std::uint32_t>>{1, {1}},
-        std::pair<std::uint32_t, std::vector<std::uint32_t>>{9, {1}}}) {
+        std::pair<std::uint32_t, std::vector<std::uint32_t>>{9, {1}},
+        std::pair<std::uint32_t, std::vector<std::uint32_t>>{0, {kNoNode}}}) {
     std::vector<std::byte> record =
         encode(RecordType::neighbors, robot, static_cast<std::uint32_t>(ids.size()));
     for (const std::uint32_t id : ids) {
-      const auto entry = encode(id, std::int64_t{1}, -70.0, -70.0, 20.0, std::uint32_t{1});
+      const bool too_many_acks = id == kNoNode;
+      const auto entry =
+          encode(too_many_acks ? 1U : id, std::int64_t{1}, -70.0, -70.0, 20.0, std::uint32_t{1},
+                 std::uint32_t{1}, std::uint32_t{too_many_acks ? 2U : 1U});
       record.insert(record.end(), entry.begin(), entry.end());
     }
     ASSERT_EQ(link_.network_end().send(record), IoStatus::ok);
@@ -553,6 +560,127 @@ TEST_F(StepChannelBounds, AReportWithAnOutcomeOrReasonOutOfRangeIsMalformed) {
     StepResult got;
     const ProtocolResult r = robot_.receive_result(got);
     EXPECT_NE(r.error.find("malformed send_report record"), std::string::npos) << r.error;
+  }
+}
+
+// Route queries go with the batch, one record per robot; the result answers exactly the step's
+// queries, in order, and anything else is refused.
+TEST_F(StepChannelBounds, RouteQueriesAndAnswersRoundTripAndOnlyTheStepsQueriesAreAnswered) {
+  const Welcome welcome{1, 4, 100'000'000};
+  robot_.fix_limits(welcome);
+  network_.fix_limits(welcome);
+  StepBatch batch = sample_batch(4, 1);
+  batch.route_queries = {{0, 1}, {0, 3}, {2, 0}};
+  ASSERT_TRUE(robot_.send_batch(batch).ok());
+  StepBatch got;
+  bool finished = true;
+  ASSERT_TRUE(network_.receive_batch(got, finished).ok());
+  EXPECT_EQ(got.route_queries, batch.route_queries);
+  EXPECT_EQ(got.messages.size(), 1U);
+
+  StepResult result;
+  result.step = 0;
+  result.routes = {{{0, 1}, {RouteStatus::valid, 1, 1, SimTime{100}}},
+                   {{0, 3}, {RouteStatus::valid, 1, 3, SimTime{100}}},
+                   {{2, 0}, {RouteStatus::none, kNoNode, 0, SimTime{100}}}};
+  ASSERT_TRUE(network_.send_result(result).ok());
+  StepResult back;
+  const ProtocolResult r = robot_.receive_result(back);
+  ASSERT_TRUE(r.ok()) << r.error;
+  ASSERT_EQ(back.routes.size(), 3U);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(back.routes[i].query, result.routes[i].query);
+    EXPECT_EQ(back.routes[i].route.status, result.routes[i].route.status);
+    EXPECT_EQ(back.routes[i].route.next_hop, result.routes[i].route.next_hop);
+    EXPECT_EQ(back.routes[i].route.hops, result.routes[i].route.hops);
+    EXPECT_EQ(back.routes[i].route.as_of, SimTime{100});
+  }
+
+  // Step 1 asks nothing: an answer in its result is refused.
+  batch.step = 1;
+  batch.start = SimTime{100'000'000};
+  batch.route_queries.clear();
+  ASSERT_TRUE(robot_.send_batch(batch).ok());
+  ASSERT_TRUE(network_.receive_batch(got, finished).ok());
+  EXPECT_TRUE(got.route_queries.empty());
+  result.step = 1;
+  result.routes.resize(1);
+  ASSERT_TRUE(network_.send_result(result).ok());
+  const ProtocolResult refused = robot_.receive_result(back);
+  EXPECT_EQ(refused.io, IoStatus::corrupt);
+  EXPECT_NE(refused.error.find("answered 1 route queries in step 1, which asked 0"),
+            std::string::npos)
+      << refused.error;
+}
+
+TEST_F(StepChannelBounds, RouteQueriesNamingNoOtherRobotOrOutOfOrderAreRefused) {
+  network_.fix_limits(Welcome{1, 4, 100'000'000});
+  const std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> bad = {
+      {1, {1}},     // itself
+      {0, {3, 2}},  // descending
+      {0, {4}},     // outside the swarm
+      {7, {0}},     // from outside the swarm
+      {0, {}},      // an empty record
+  };
+  for (const auto& [robot, destinations] : bad) {
+    InprocChannel link(std::uint64_t{1} << 16, impatient());
+    StepChannel network(link.network_end(), "the robot half");
+    network.fix_limits(Welcome{1, 4, 100'000'000});
+    std::vector<std::vector<std::byte>> records;
+    records.push_back(encode(RecordType::step_begin, std::uint64_t{0}, std::int64_t{0},
+                             std::uint32_t{4}, std::uint32_t{0}));
+    std::vector<std::byte> positions =
+        encode(RecordType::positions, std::uint32_t{0}, std::uint32_t{4});
+    for (int i = 0; i < 8; ++i) {
+      const auto coordinate = encode(1.0);
+      positions.insert(positions.end(), coordinate.begin(), coordinate.end());
+    }
+    records.push_back(positions);
+    std::vector<std::byte> query =
+        encode(RecordType::route_query, robot, static_cast<std::uint32_t>(destinations.size()));
+    for (const std::uint32_t d : destinations) {
+      const auto entry = encode(d);
+      query.insert(query.end(), entry.begin(), entry.end());
+    }
+    records.push_back(query);
+    for (const auto& record : records) ASSERT_EQ(link.robot_end().send(record), IoStatus::ok);
+    ASSERT_EQ(link.robot_end().flush(), IoStatus::ok);
+    StepBatch got;
+    bool finished = false;
+    const ProtocolResult r = network.receive_batch(got, finished);
+    EXPECT_EQ(r.io, IoStatus::corrupt) << robot;
+    EXPECT_NE(r.error.find("route quer"), std::string::npos) << r.error;
+  }
+}
+
+TEST_F(StepChannelBounds, ARouteAnswerNoProtocolCanGiveIsRefused) {
+  const Welcome welcome{1, 4, 100'000'000};
+  struct Bad {
+    std::uint8_t status;
+    std::uint32_t next_hop;
+    std::uint32_t hops;
+  };
+  for (const Bad bad : {Bad{0, kNoNode, 0},  // pending is the robot half's own
+                        Bad{3, 9, 1},        // a next hop outside the swarm
+                        Bad{3, 1, 0},        // a valid route of no hops
+                        Bad{4, 1, 1}}) {     // no such status
+    InprocChannel link(std::uint64_t{1} << 16, impatient());
+    StepChannel robot(link.robot_end(), "the network half");
+    StepChannel network(link.network_end(), "the robot half");
+    robot.fix_limits(welcome);
+    network.fix_limits(welcome);
+    StepBatch batch = sample_batch(4, 0);
+    batch.route_queries = {{0, 2}};
+    ASSERT_TRUE(robot.send_batch(batch).ok());
+    const auto record =
+        encode(RecordType::route, std::uint32_t{0}, std::uint32_t{1}, std::uint32_t{2}, bad.status,
+               bad.next_hop, bad.hops, std::int64_t{0});
+    ASSERT_EQ(link.network_end().send(record), IoStatus::ok);
+    ASSERT_EQ(link.network_end().flush(), IoStatus::ok);
+    StepResult got;
+    const ProtocolResult r = robot.receive_result(got);
+    EXPECT_EQ(r.io, IoStatus::corrupt);
+    EXPECT_NE(r.error.find("route answer for robot 0 about 2"), std::string::npos) << r.error;
   }
 }
 

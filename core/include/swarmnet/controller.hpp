@@ -19,6 +19,7 @@
 #include "swarmnet/ids.hpp"
 #include "swarmnet/plugin.hpp"
 #include "swarmnet/radio_neighbor.hpp"
+#include "swarmnet/route.hpp"
 #include "swarmnet/send_report.hpp"
 #include "swarmnet/units.hpp"
 #include "swarmnet/vector.hpp"
@@ -68,6 +69,14 @@ class RobotContext {
   // inbox's delay), in the order the outcomes happened. A message still queued at the end of
   // the run gets none.
   [[nodiscard]] virtual std::span<const SendReport> send_reports() const = 0;
+  // What this robot's routing protocol knew of the way to robot `destination` at the end of the
+  // network window whose deliveries inbox() holds (swarmnet/route.hpp): valid with next hop and
+  // hops, none, or not_tracked (flooding keeps no routes). Asking is what makes the network half
+  // answer: the first call for a destination returns pending, and a controller that asks every
+  // step gets an answer from the next step on (two steps under sync: pipelined). Up to
+  // kMaxRouteQueriesPerRobot destinations per robot and step (std::length_error beyond);
+  // std::invalid_argument for this robot's own id or one that is not a robot.
+  [[nodiscard]] virtual Route route_to(RobotId destination) = 0;
   // A reading that one of the scenario's world plugins offers this robot (swarmnet/world.hpp),
   // laid out as that plugin documents. Valid until the next call of reading() by any controller
   // (copy what you keep). Throws

@@ -31,6 +31,11 @@ class MacContext : public NodeContext {
   // or data; 1 for the first). A MAC whose acknowledges_unicasts() is true calls it for every
   // acknowledged unicast: the sender's send report (swarmnet/send_report.hpp) comes from it.
   virtual void acknowledged(const Packet& packet, NodeId next_hop, std::uint32_t attempts) = 0;
+  // Tells the kernel that the MAC gave up `packet` to `next_hop` after `attempts` transmissions
+  // without an acknowledgement (its retry limit, or its lifetime ran out mid-exchange); call it
+  // before drop() or link_failed(). With acknowledged(), it feeds the radio neighbour tables'
+  // share of unicasts acknowledged at the first attempt (swarmnet/radio_neighbor.hpp).
+  virtual void gave_up(const Packet& packet, NodeId next_hop, std::uint32_t attempts) = 0;
 
  protected:
   ~MacContext() = default;

@@ -31,8 +31,9 @@ namespace swarmnet {
 // RobotContext::show_state, WorldContext::show_object and hide_object (what the viewer draws).
 // 6: Packet::protocol (ARP), RoutingContext::link_address_known. 7: RobotContext::neighbors.
 // 8: send options and reports (RobotContext::send's options, send_reports; Packet::hop_limit;
-// MacContext::acknowledged; Mac::acknowledges_unicasts).
-inline constexpr std::uint32_t kAbiVersion = 8;
+// MacContext::acknowledged; Mac::acknowledges_unicasts). 9: RobotContext::route_to and
+// Routing::route_to; RadioNeighbor's unicast exchanges; MacContext::gave_up.
+inline constexpr std::uint32_t kAbiVersion = 9;
 
 enum class PluginKind : std::uint8_t { physics, propagation, mac, routing, controller, world };
 

@@ -4,6 +4,7 @@
 #include "swarmnet/node_context.hpp"
 #include "swarmnet/packet.hpp"
 #include "swarmnet/plugin.hpp"
+#include "swarmnet/route.hpp"
 
 namespace swarmnet {
 
@@ -41,6 +42,12 @@ class Routing : public Plugin {
   virtual void receive(Packet packet, NodeId from) = 0;
   // From the MAC: `next_hop` did not acknowledge `packet`.
   virtual void link_failed(const Packet& /*packet*/, NodeId /*next_hop*/) {}
+  // What this node's protocol holds now for `destination` (another node): RouteStatus none,
+  // valid (with next_hop and hops), or not_tracked for a protocol that keeps no routes (the
+  // default). The kernel asks at the end of a network window for the destinations controllers
+  // asked about (RobotContext::route_to) and sets Route::as_of. A query only reads: it must not
+  // age, refresh or otherwise change the protocol's state, so that asking changes no result.
+  [[nodiscard]] virtual Route route_to(NodeId /*destination*/) const { return Route{}; }
 };
 
 }  // namespace swarmnet

@@ -8,7 +8,8 @@ NeighborTables::NeighborTables(std::uint32_t nodes, const NeighborSensing& setti
     : window_(from_seconds(settings.window_s)),
       max_per_robot_(settings.max_per_robot),
       smoothing_(settings.rssi_smoothing),
-      tables_(nodes) {}
+      tables_(nodes),
+      links_(nodes) {}
 
 void NeighborTables::heard(NodeId receiver, const Frame& frame, const RxInfo& info, SimTime now) {
   if (frame.type == FrameType::ack || frame.type == FrameType::cts) return;
@@ -32,6 +33,16 @@ void NeighborTables::heard(NodeId receiver, const Frame& frame, const RxInfo& in
   at->frame_ends.push_back(now);
 }
 
+void NeighborTables::exchange_ended(NodeId sender, NodeId next_hop, bool acknowledged,
+                                    std::uint32_t attempts, SimTime now) {
+  if (sender >= links_.size() || next_hop >= links_.size() || next_hop == sender) return;
+  std::vector<Link>& links = links_[sender];
+  auto at = std::lower_bound(links.begin(), links.end(), next_hop,
+                             [](const Link& l, NodeId id) { return l.neighbor < id; });
+  if (at == links.end() || at->neighbor != next_hop) at = links.insert(at, Link{next_hop, {}});
+  at->exchanges.push_back(Exchange{now, acknowledged && attempts == 1});
+}
+
 void NeighborTables::collect(SimTime now, std::vector<std::uint32_t>& counts,
                              std::vector<RadioNeighbor>& entries) {
   counts.assign(tables_.size(), 0);
@@ -45,7 +56,10 @@ void NeighborTables::collect(SimTime now, std::vector<std::uint32_t>& counts,
       const auto first_inside = std::upper_bound(h.frame_ends.begin(), h.frame_ends.end(), cutoff);
       h.frame_ends.erase(h.frame_ends.begin(), first_inside);
       h.reading.frames = static_cast<std::uint32_t>(h.frame_ends.size());
+      h.reading.unicasts = 0;
+      h.reading.first_attempt_acks = 0;
     }
+    count_exchanges(node, cutoff);
     kept_.resize(table.size());
     for (std::uint32_t i = 0; i < kept_.size(); ++i) kept_[i] = i;
     if (kept_.size() > max_per_robot_) {
@@ -60,6 +74,26 @@ void NeighborTables::collect(SimTime now, std::vector<std::uint32_t>& counts,
     }
     counts[node] = static_cast<std::uint32_t>(kept_.size());
     for (const std::uint32_t i : kept_) entries.push_back(table[i].reading);
+  }
+}
+
+void NeighborTables::count_exchanges(std::size_t node, SimTime cutoff) {
+  std::vector<Link>& links = links_[node];
+  for (Link& link : links) {
+    std::erase_if(link.exchanges, [cutoff](const Exchange& e) { return e.ended <= cutoff; });
+  }
+  std::erase_if(links, [](const Link& l) { return l.exchanges.empty(); });
+  // Both ascending by id: one merge walk.
+  std::vector<Heard>& table = tables_[node];
+  auto heard = table.begin();
+  for (const Link& link : links) {
+    while (heard != table.end() && heard->reading.id < link.neighbor) ++heard;
+    if (heard == table.end()) return;
+    if (heard->reading.id != link.neighbor) continue;
+    heard->reading.unicasts = static_cast<std::uint32_t>(link.exchanges.size());
+    heard->reading.first_attempt_acks = static_cast<std::uint32_t>(
+        std::count_if(link.exchanges.begin(), link.exchanges.end(),
+                      [](const Exchange& e) { return e.first_attempt_ack; }));
   }
 }
 

@@ -37,6 +37,7 @@ SimTime checked_step(const NetworkSettings& settings) {
 NetworkSimulator::NetworkSimulator(const NetworkSettings& settings, PluginLoader& loader,
                                    std::ostream* packet_trace, std::ostream* frame_trace)
     : traffic_seed_(settings.traffic_seed),
+      routing_name_(settings.network.routing.name),
       step_(checked_step(settings)),
       trace_(packet_trace),
       frames_(frame_trace),
@@ -87,6 +88,15 @@ void NetworkSimulator::check_batch(const StepBatch& batch) const {
                                 std::to_string(batch.positions.size()) + " positions for " +
                                 std::to_string(nodes_.size()) + " nodes");
   }
+  for (const RouteQuery& query : batch.route_queries) {
+    if (query.robot >= nodes_.size() || query.destination >= nodes_.size() ||
+        query.robot == query.destination) {
+      throw std::invalid_argument("network: step " + std::to_string(batch.step) + " asks robot " +
+                                  std::to_string(query.robot) + "'s route to " +
+                                  std::to_string(query.destination) +
+                                  ", which is not another robot");
+    }
+  }
   for (const AppMessage& message : batch.messages) {
     const bool bad_destination =
         message.destination != kBroadcast && message.destination >= nodes_.size();
@@ -129,10 +139,33 @@ void NetworkSimulator::run_step(const StepBatch& batch, StepResult& result) {
   if (neighbors_) neighbors_->collect(scheduler_.now(), result.neighbor_counts, result.neighbors);
   result.send_reports.clear();
   send_reports_.collect(result.send_reports);
+  answer_route_queries(batch.route_queries, result.routes);
 
   trace_.flush();
   frames_.flush();
   result.events = events;
+}
+
+void NetworkSimulator::answer_route_queries(std::span<const RouteQuery> queries,
+                                            std::vector<RouteAnswer>& answers) const {
+  answers.clear();
+  for (const RouteQuery& query : queries) {
+    Route route = nodes_[query.robot]->routing().route_to(query.destination);
+    const bool valid = route.status == RouteStatus::valid;
+    if (route.status > RouteStatus::valid || route.status == RouteStatus::pending ||
+        (valid && (route.next_hop >= nodes_.size() || route.hops == 0))) {
+      throw std::logic_error("network: routing plugin '" + routing_name_ + "' answered node " +
+                             std::to_string(query.robot) + "'s route_to(" +
+                             std::to_string(query.destination) + ") with status " +
+                             std::to_string(static_cast<unsigned>(route.status)) + ", next hop " +
+                             std::to_string(route.next_hop) + ", " + std::to_string(route.hops) +
+                             " hops (a valid route names a node and at least one hop; pending is "
+                             "the kernel's)");
+    }
+    if (!valid) route = Route{route.status};
+    route.as_of = scheduler_.now();
+    answers.push_back(RouteAnswer{query, route});
+  }
 }
 
 NetworkReport NetworkSimulator::report() const {

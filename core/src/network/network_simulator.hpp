@@ -51,8 +51,9 @@ class NetworkSimulator final : public NetworkEngine {
   // the window), injects each message at batch.start + injection_offset(seed, message id, step),
   // runs every event before the window's end and fills `result` (step, deliveries in delivery
   // order, events run in the window). batch.start must not be before the end of the previous
-  // window; a batch with the wrong number of positions or a message from/to an unknown robot is
-  // refused with std::invalid_argument before anything is simulated.
+  // window; a batch with the wrong number of positions, or a message or a route query naming an
+  // unknown robot, is refused with std::invalid_argument before anything is simulated. Route
+  // queries are answered at the window's end (result.routes).
   void run_step(const StepBatch& batch, StepResult& result) override;
 
   // Metrics so far (keys and definitions: network_metrics.hpp).
@@ -75,8 +76,13 @@ class NetworkSimulator final : public NetworkEngine {
 
  private:
   void check_batch(const StepBatch& batch) const;
+  // Asks each query's node's routing plugin (Routing::route_to) now, at the window's end;
+  // throws std::logic_error, naming the plugin, for an answer no protocol may give.
+  void answer_route_queries(std::span<const RouteQuery> queries,
+                            std::vector<RouteAnswer>& answers) const;
 
   std::uint64_t traffic_seed_;  // places injections in their step (NetworkSettings)
+  std::string routing_name_;    // network.routing's plugin, for errors in its answers
   SimTime step_;
   // Declared first, destroyed last; the destructor clears it before the plugins go, so no
   // callback made by a plugin's code outlives the plugin's library.

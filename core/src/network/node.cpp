@@ -100,6 +100,15 @@ void Node::MacPort::acknowledged(const Packet& packet, NodeId next_hop, std::uin
   if (reports.awaiting()) {
     reports.met(node_.id_, packet, SendOutcome::acknowledged, now(), next_hop, attempts);
   }
+  if (NeighborTables* tables = node_.services_.neighbors) {
+    tables->exchange_ended(node_.id_, next_hop, true, attempts, now());
+  }
+}
+
+void Node::MacPort::gave_up(const Packet& /*packet*/, NodeId next_hop, std::uint32_t attempts) {
+  if (NeighborTables* tables = node_.services_.neighbors) {
+    tables->exchange_ended(node_.id_, next_hop, false, attempts, now());
+  }
 }
 
 // ---- RoutingPort ------------------------------------------------------------------------------

@@ -11,7 +11,8 @@
 //   routing.deliver()       -> application layer
 //   drop() from either      -> packet trace "drop" and packets.dropped.<reason>; the sender's
 //                              send report if the node is the message's source
-//   mac.acknowledged()      -> the sender's send report (acknowledged)
+//   mac.acknowledged()      -> the sender's send report (acknowledged), and with mac.gave_up()
+//                              the neighbour tables' unicast exchanges (network.neighbors)
 //   mac.transmit() of a source's own broadcast (or unicast, under a MAC that acknowledges
 //                              nothing) -> the sender's send report (sent)
 //   count() from either     -> mac.<counter> or routing.<counter> in the report
@@ -109,6 +110,7 @@ class Node final : private PhyListener {
     void link_failed(const Packet& packet, NodeId next_hop) override;
     void drop(const Packet& packet, DropReason reason) override;
     void acknowledged(const Packet& packet, NodeId next_hop, std::uint32_t attempts) override;
+    void gave_up(const Packet& packet, NodeId next_hop, std::uint32_t attempts) override;
   };
 
   class RoutingPort final : public Port<RoutingContext> {

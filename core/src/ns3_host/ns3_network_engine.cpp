@@ -64,6 +64,14 @@ void Ns3NetworkEngine::check_batch(const StepBatch& batch) const {
           " (SendOptions); network.engine: ns3 gives neither: run it with the native engine");
     }
   }
+  if (!batch.route_queries.empty()) {
+    const RouteQuery& query = batch.route_queries.front();
+    throw std::invalid_argument("robot " + std::to_string(query.robot) + " asks route_to(" +
+                                std::to_string(query.destination) + ") in step " +
+                                std::to_string(batch.step) +
+                                "; network.engine: ns3 answers no route queries: run it with the "
+                                "native engine");
+  }
 }
 
 void Ns3NetworkEngine::run_step(const StepBatch& batch, StepResult& result) {

@@ -41,6 +41,10 @@ const char* to_string(RecordType type) {
       return "neighbors";
     case RecordType::send_report:
       return "send_report";
+    case RecordType::route_query:
+      return "route_query";
+    case RecordType::route:
+      return "route";
     case RecordType::hello:
       return "hello";
     case RecordType::welcome:
@@ -85,8 +89,8 @@ ProtocolResult StepChannel::send_positions(const StepBatch& batch, std::uint32_t
   return sent("positions", status, false);
 }
 
-// id, last_heard, rssi, smoothed rssi, sinr, frames.
-constexpr std::size_t kNeighborBytes = 4 + 8 + 8 + 8 + 8 + 4;
+// id, last_heard, rssi, smoothed rssi, sinr, frames, unicasts, first-attempt acks.
+constexpr std::size_t kNeighborBytes = 4 + 8 + 8 + 8 + 8 + 4 + 4 + 4;
 
 ProtocolResult StepChannel::send_neighbors(RobotId robot, std::span<const RadioNeighbor> table) {
   const RecordType type = RecordType::neighbors;
@@ -100,7 +104,7 @@ ProtocolResult StepChannel::send_neighbors(RobotId robot, std::span<const RadioN
     writer.put(type).put(robot).put(count);
     for (const RadioNeighbor& n : table) {
       writer.put(n.id).put(n.last_heard.count()).put(n.rssi_dbm).put(n.rssi_smoothed_dbm);
-      writer.put(n.sinr_db).put(n.frames);
+      writer.put(n.sinr_db).put(n.frames).put(n.unicasts).put(n.first_attempt_acks);
     }
     status = transport_.commit();
   }
@@ -134,10 +138,18 @@ ProtocolResult StepChannel::receive_neighbors(RecordReader& reader, StepResult& 
     (void)reader.get(n.rssi_smoothed_dbm);
     (void)reader.get(n.sinr_db);
     (void)reader.get(n.frames);
+    (void)reader.get(n.unicasts);
+    (void)reader.get(n.first_attempt_acks);
     if (n.id >= limits_.robots || static_cast<std::int64_t>(n.id) <= last_id || n.id == robot) {
       return over_limit("sent a neighbour table for robot " + std::to_string(robot) +
                         " naming node " + std::to_string(n.id) +
                         " (entries name other robots, ascending)");
+    }
+    if (n.first_attempt_acks > n.unicasts) {
+      return over_limit(
+          "sent a neighbour table for robot " + std::to_string(robot) + " where node " +
+          std::to_string(n.id) + " has " + std::to_string(n.first_attempt_acks) +
+          " first-attempt acknowledgements of " + std::to_string(n.unicasts) + " unicasts");
     }
     last_id = n.id;
     n.last_heard = SimTime{heard};
@@ -177,6 +189,139 @@ ProtocolResult StepChannel::receive_send_report(RecordReader& reader, StepResult
   return {};
 }
 
+namespace {
+
+// The run of `items` from `first` that belongs to the same robot.
+template <typename T, typename RobotOf>
+std::size_t same_robot_run(std::span<const T> items, std::size_t first, RobotOf robot_of) {
+  std::size_t last = first;
+  while (last < items.size() && robot_of(items[last]) == robot_of(items[first])) ++last;
+  return last - first;
+}
+
+constexpr std::size_t kRouteQueryBytes = 4;                   // destination
+constexpr std::size_t kRouteAnswerBytes = 4 + 1 + 4 + 4 + 8;  // destination, status, next hop,
+                                                              // hops, as_of
+
+}  // namespace
+
+ProtocolResult StepChannel::send_route_queries(std::span<const RouteQuery> queries) {
+  const RecordType type = RecordType::route_query;
+  const RobotId robot = queries.front().robot;
+  const auto count = static_cast<std::uint32_t>(queries.size());
+  std::span<std::byte> space;
+  IoStatus status = transport_.reserve(encoded_bytes(type) + encoded_bytes(robot) +
+                                           encoded_bytes(count) + queries.size() * kRouteQueryBytes,
+                                       space);
+  if (status == IoStatus::ok) {
+    RecordWriter writer(space);
+    writer.put(type).put(robot).put(count);
+    for (const RouteQuery& q : queries) writer.put(q.destination);
+    status = transport_.commit();
+  }
+  return sent("route_query", status, false);
+}
+
+ProtocolResult StepChannel::receive_route_queries(RecordReader& reader, StepBatch& batch) {
+  RobotId robot = 0;
+  std::uint32_t count = 0;
+  if (!reader.get(robot) || !reader.get(count) ||
+      reader.remaining() != std::size_t{count} * kRouteQueryBytes) {
+    return malformed(RecordType::route_query);
+  }
+  const bool after_last = batch.route_queries.empty() || batch.route_queries.back().robot < robot;
+  if (robot >= limits_.robots || !after_last || count == 0 || count > kMaxRouteQueriesPerRobot) {
+    return over_limit("sent route queries of robot " + std::to_string(robot) + " in step " +
+                      std::to_string(batch.step) + " (" + std::to_string(count) +
+                      " of them; queries come once per robot, in order, 1 to " +
+                      std::to_string(kMaxRouteQueriesPerRobot) + " each)");
+  }
+  std::int64_t last = -1;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    RobotId destination = 0;
+    (void)reader.get(destination);  // the length check above guarantees it
+    if (destination >= limits_.robots || destination == robot ||
+        static_cast<std::int64_t>(destination) <= last) {
+      return over_limit("sent a route query of robot " + std::to_string(robot) + " about " +
+                        std::to_string(destination) +
+                        " (destinations are other robots, ascending)");
+    }
+    last = destination;
+    batch.route_queries.push_back(RouteQuery{robot, destination});
+  }
+  return {};
+}
+
+ProtocolResult StepChannel::send_routes(std::span<const RouteAnswer> answers) {
+  const RecordType type = RecordType::route;
+  const RobotId robot = answers.front().query.robot;
+  const auto count = static_cast<std::uint32_t>(answers.size());
+  std::span<std::byte> space;
+  IoStatus status =
+      transport_.reserve(encoded_bytes(type) + encoded_bytes(robot) + encoded_bytes(count) +
+                             answers.size() * kRouteAnswerBytes,
+                         space);
+  if (status == IoStatus::ok) {
+    RecordWriter writer(space);
+    writer.put(type).put(robot).put(count);
+    for (const RouteAnswer& a : answers) {
+      writer.put(a.query.destination).put(a.route.status).put(a.route.next_hop);
+      writer.put(a.route.hops).put(a.route.as_of.count());
+    }
+    status = transport_.commit();
+  }
+  return sent("route", status, false);
+}
+
+ProtocolResult StepChannel::receive_routes(RecordReader& reader, StepResult& result) {
+  RobotId robot = 0;
+  std::uint32_t count = 0;
+  if (!reader.get(robot) || !reader.get(count) ||
+      reader.remaining() != std::size_t{count} * kRouteAnswerBytes ||
+      count > kMaxRouteQueriesPerRobot) {
+    return malformed(RecordType::route);
+  }
+  for (std::uint32_t i = 0; i < count; ++i) {
+    RouteAnswer a;
+    a.query.robot = robot;
+    std::int64_t as_of = 0;
+    (void)reader.get(a.query.destination);  // the length check above guarantees every field
+    (void)reader.get(a.route.status);
+    (void)reader.get(a.route.next_hop);
+    (void)reader.get(a.route.hops);
+    (void)reader.get(as_of);
+    a.route.as_of = SimTime{as_of};
+    const bool valid = a.route.status == RouteStatus::valid;
+    if (a.route.status > RouteStatus::valid || a.route.status == RouteStatus::pending ||
+        (valid && (a.route.next_hop >= limits_.robots || a.route.hops == 0))) {
+      return over_limit("sent a route answer for robot " + std::to_string(robot) + " about " +
+                        std::to_string(a.query.destination) + " with status " +
+                        std::to_string(static_cast<unsigned>(a.route.status)) + ", next hop " +
+                        std::to_string(a.route.next_hop) + ", " + std::to_string(a.route.hops) +
+                        " hops");
+    }
+    result.routes.push_back(a);
+  }
+  return {};
+}
+
+ProtocolResult StepChannel::check_routes_owed(const StepResult& result) {
+  static const std::vector<RouteQuery> kNone;
+  const bool owed = !routes_owed_.empty() && routes_owed_.front().first == result.step;
+  const std::vector<RouteQuery>& queries = owed ? routes_owed_.front().second : kNone;
+  bool match = queries.size() == result.routes.size();
+  for (std::size_t i = 0; match && i < queries.size(); ++i) {
+    match = queries[i] == result.routes[i].query;
+  }
+  if (!match) {
+    return over_limit("answered " + std::to_string(result.routes.size()) +
+                      " route queries in step " + std::to_string(result.step) + ", which asked " +
+                      std::to_string(queries.size()) + " (each once, in order)");
+  }
+  if (owed) routes_owed_.pop_front();
+  return {};
+}
+
 ProtocolResult StepChannel::sent(const char* what, IoStatus status, bool last_of_batch) {
   if (status == IoStatus::ok && last_of_batch) status = transport_.flush();
   if (status == IoStatus::ok) return {};
@@ -194,7 +339,7 @@ ProtocolResult StepChannel::receive(RecordType& type, RecordReader*& reader) {
   }
   reader_.emplace(in_);
   std::uint32_t raw = 0;
-  if (!reader_->get(raw) || raw < 1 || raw > static_cast<std::uint32_t>(RecordType::send_report)) {
+  if (!reader_->get(raw) || raw < 1 || raw > static_cast<std::uint32_t>(RecordType::route)) {
     return {IoStatus::corrupt,
             "malformed record from " + peer_ + ": unknown record type " + std::to_string(raw)};
   }
@@ -332,6 +477,14 @@ ProtocolResult StepChannel::send_batch(const StepBatch& batch) {
       return r;
     }
   }
+  const std::span<const RouteQuery> queries(batch.route_queries);
+  for (std::size_t first = 0; first < queries.size();) {
+    const std::size_t count =
+        same_robot_run(queries, first, [](const RouteQuery& q) { return q.robot; });
+    if (auto r = send_route_queries(queries.subspan(first, count)); !r.ok()) return r;
+    first += count;
+  }
+  if (!queries.empty()) routes_owed_.emplace_back(batch.step, batch.route_queries);
   return send_record("step_end", true, RecordType::step_end, batch.step);
 }
 
@@ -426,8 +579,13 @@ ProtocolResult StepChannel::receive_batch(StepBatch& batch, bool& finished) {
                         ", the most the network half's memory budget allows in one step");
     }
   }
-  if (auto r = receive(type, reader); !r.ok()) return r;
-  if (type != RecordType::step_end) return unexpected(type, "step_end");
+  batch.route_queries.clear();
+  for (;;) {
+    if (auto r = receive(type, reader); !r.ok()) return r;
+    if (type != RecordType::route_query) break;
+    if (auto r = receive_route_queries(*reader, batch); !r.ok()) return r;
+  }
+  if (type != RecordType::step_end) return unexpected(type, "route_query or step_end");
   std::uint64_t step = 0;
   if (!reader->get(step) || !reader->at_end()) return malformed(type);
   if (step != batch.step) {
@@ -460,6 +618,13 @@ ProtocolResult StepChannel::send_result(const StepResult& result) {
   for (const AddressedSendReport& report : result.send_reports) {
     if (auto r = send_send_report(report); !r.ok()) return r;
   }
+  const std::span<const RouteAnswer> answers(result.routes);
+  for (std::size_t first = 0; first < answers.size();) {
+    const std::size_t count =
+        same_robot_run(answers, first, [](const RouteAnswer& a) { return a.query.robot; });
+    if (auto r = send_routes(answers.subspan(first, count)); !r.ok()) return r;
+    first += count;
+  }
   return send_record("step_done", true, RecordType::step_done, result.step, result.events,
                      static_cast<std::uint32_t>(result.deliveries.size()));
 }
@@ -471,6 +636,7 @@ ProtocolResult StepChannel::receive_result(StepResult& result) {
   std::int64_t last_table = -1;  // the robot whose neighbour table came last
   result.neighbors.clear();
   result.send_reports.clear();
+  result.routes.clear();
   result.neighbor_counts.assign(limits_.max_neighbors == 0 ? 0 : limits_.robots, 0);
   for (;;) {
     RecordType type{};
@@ -503,8 +669,12 @@ ProtocolResult StepChannel::receive_result(StepResult& result) {
       if (auto r = receive_send_report(*reader, result); !r.ok()) return r;
       continue;
     }
+    if (type == RecordType::route) {
+      if (auto r = receive_routes(*reader, result); !r.ok()) return r;
+      continue;
+    }
     if (type != RecordType::step_done) {
-      return unexpected(type, "delivery, neighbors, send_report or step_done");
+      return unexpected(type, "delivery, neighbors, send_report, route or step_done");
     }
     result.deliveries.resize(count_so_far);
     std::uint32_t count = 0;
@@ -517,7 +687,7 @@ ProtocolResult StepChannel::receive_result(StepResult& result) {
                                      std::to_string(count) + " deliveries but sent " +
                                      std::to_string(result.deliveries.size())};
     }
-    return {};
+    return check_routes_owed(result);
   }
 }
 

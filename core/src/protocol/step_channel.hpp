@@ -1,15 +1,18 @@
-// The step protocol of DESIGN.md section 2 as records over a Transport.
+// The step protocol (docs/transport.md) as records over a Transport.
 //
 // Robot half -> network half, per step: step_begin, positions (in chunks), one message record
-// per application message, step_end. At the end: finish.
+// per application message, one route_query record per robot whose controllers called
+// route_to() (ascending robot), step_end. At the end: finish.
 // Network half -> robot half, per step: one delivery record per delivery, with
 // network.neighbors one neighbors record per robot whose table is not empty (ascending robot),
-// one send_report record per report (in the order the outcomes happened), step_done. After
+// one send_report record per report (in the order the outcomes happened), one route record per
+// robot that asked (the answers, in the queries' order), step_done. After
 // finish: report (the network's metrics, a NetworkReport).
 // Either side may send failure (a text) before it stops, so the other can say why.
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <optional>
 #include <span>
@@ -37,7 +40,9 @@ enum class RecordType : std::uint32_t {
   hello = 10,
   welcome = 11,
   neighbors = 12,
-  send_report = 13,  // the last: StepChannel::receive refuses any type beyond it
+  send_report = 13,
+  route_query = 14,
+  route = 15,  // the last: StepChannel::receive refuses any type beyond it
 };
 
 // What the handshake fixes, so that every count a peer announces later is checked before
@@ -55,8 +60,9 @@ inline constexpr std::uint32_t kMaxRobots = 100000;
 
 // Version of the records above; both halves must speak the same one.
 // 4: the report's arp counters. 5: neighbour tables (the welcome's max_neighbors). 6: send
-// options in message records, send_report records.
-inline constexpr std::uint32_t kStepProtocolVersion = 6;
+// options in message records, send_report records. 7: neighbour entries' unicast exchanges,
+// route_query and route records.
+inline constexpr std::uint32_t kStepProtocolVersion = 7;
 
 // The handshake (the study's Fig. 1). The robot half's hello carries exactly one description of
 // what to simulate, the resolved scenario; the network half validates it and answers with a
@@ -143,6 +149,13 @@ class StepChannel {
                                    std::int64_t& last_robot);
   ProtocolResult send_send_report(const AddressedSendReport& addressed);
   ProtocolResult receive_send_report(RecordReader& reader, StepResult& result);
+  // One robot's queries or answers: robot, count, then the entries.
+  ProtocolResult send_route_queries(std::span<const RouteQuery> queries);
+  ProtocolResult receive_route_queries(RecordReader& reader, StepBatch& batch);
+  ProtocolResult send_routes(std::span<const RouteAnswer> answers);
+  ProtocolResult receive_routes(RecordReader& reader, StepResult& result);
+  // At a result's step_done: its route answers must be those of the step's queries.
+  ProtocolResult check_routes_owed(const StepResult& result);
   ProtocolResult sent(const char* what, IoStatus status, bool last_of_batch);
   ProtocolResult receive(RecordType& type, RecordReader*& reader);
   ProtocolResult malformed(RecordType type) const;
@@ -165,6 +178,9 @@ class StepChannel {
     std::uint16_t port;
   };
   std::map<std::uint64_t, Reported> reports_owed_;
+  // Robot side: the route queries of each step sent and not answered yet (only steps that had
+  // some), oldest first; a step's result must answer exactly its queries, in order.
+  std::deque<std::pair<std::uint64_t, std::vector<RouteQuery>>> routes_owed_;
   std::uint64_t next_step_ = 0;  // the step number the next step_begin must carry
   std::uint64_t step_payload_limit_ = ~std::uint64_t{0};
 };

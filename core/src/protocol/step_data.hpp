@@ -3,6 +3,7 @@
 // buffer, and decodes them from where they arrive; both halves see only these types.
 #pragma once
 
+#include <compare>
 #include <cstdint>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "swarmnet/packet.hpp"
 #include "swarmnet/radio_neighbor.hpp"
 #include "swarmnet/random.hpp"
+#include "swarmnet/route.hpp"
 #include "swarmnet/send_report.hpp"
 #include "swarmnet/units.hpp"
 #include "swarmnet/vector.hpp"
@@ -34,12 +36,31 @@ struct AppMessage {
   bool report = false;         // SendOptions::report: the sender wants its SendReport
 };
 
+// A controller of robot `robot` asked what its routing protocol knows of `destination`
+// (RobotContext::route_to); the network half answers at the end of the step's window.
+struct RouteQuery {
+  RobotId robot = kNoNode;
+  RobotId destination = kNoNode;
+
+  friend bool operator==(const RouteQuery&, const RouteQuery&) = default;
+  friend auto operator<=>(const RouteQuery&, const RouteQuery&) = default;
+};
+
 // Robot half -> network half: step `step` covers [start, start + step length).
 struct StepBatch {
   std::uint64_t step = 0;
   SimTime start{};
   std::vector<Vec2> positions;  // robot i's position at `start`
   std::vector<AppMessage> messages;
+  // Ascending by (robot, destination), unique, at most kMaxRouteQueriesPerRobot per robot;
+  // empty unless a controller called route_to().
+  std::vector<RouteQuery> route_queries;
+};
+
+// The answer to one RouteQuery.
+struct RouteAnswer {
+  RouteQuery query;
+  Route route;
 };
 
 // One application-level delivery: message `message_id` reached robot `receiver`.
@@ -74,6 +95,8 @@ struct StepResult {
   // Reports on messages sent with SendOptions::report whose outcome fell in the window, in the
   // order the outcomes happened.
   std::vector<AddressedSendReport> send_reports;
+  // One answer per route query of the step's batch, in the queries' order.
+  std::vector<RouteAnswer> routes;
 };
 
 }  // namespace swarmnet

@@ -47,6 +47,31 @@ std::span<const SendReport> WorldRobotContext::send_reports() const {
           static_cast<std::size_t>(last - first)};
 }
 
+Route WorldRobotContext::route_to(RobotId destination) {
+  if (destination >= state_->bodies.size() || destination == id_) {
+    throw std::invalid_argument("robot " + std::to_string(id_) + ": route_to(" +
+                                std::to_string(destination) + "): ask about another robot, 0 to " +
+                                std::to_string(state_->bodies.size() - 1));
+  }
+  std::vector<RobotId>& asks = state_->route_asks[id_];
+  if (std::find(asks.begin(), asks.end(), destination) == asks.end()) {
+    if (asks.size() == kMaxRouteQueriesPerRobot) {
+      throw std::length_error("robot " + std::to_string(id_) + ": route_to(" +
+                              std::to_string(destination) + ") would ask about more than " +
+                              std::to_string(kMaxRouteQueriesPerRobot) +
+                              " robots in one step (kMaxRouteQueriesPerRobot)");
+    }
+    asks.push_back(destination);
+  }
+  const RouteQuery query{id_, destination};
+  const auto& routes = state_->routes;
+  const auto at =
+      std::lower_bound(routes.begin(), routes.end(), query,
+                       [](const RouteAnswer& a, const RouteQuery& q) { return a.query < q; });
+  if (at == routes.end() || at->query != query) return Route{RouteStatus::pending};
+  return at->route;
+}
+
 std::uint64_t WorldRobotContext::send(RobotId destination, std::span<const std::byte> payload,
                                       const SendOptions& options) {
   if (payload.size() > kMaxPayloadBytes) {

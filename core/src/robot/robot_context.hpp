@@ -59,6 +59,10 @@ struct RobotWorldState {
   // slot's reports in the order their outcomes happened.
   std::vector<std::size_t> send_report_slots;
   std::vector<SendReport> send_reports;
+  // route_to(): what each robot's controllers asked this step (route_asks[r], in asking order)
+  // and the answers to the previous batch's queries, ascending by (robot, destination).
+  std::vector<std::vector<RobotId>> route_asks;
+  std::vector<RouteAnswer> routes;
   ViewRecord view;  // what controllers and worlds asked the viewer to show
 };
 
@@ -85,6 +89,7 @@ class WorldRobotContext final : public RobotContext {
   // Throws std::logic_error when the scenario keeps no neighbour tables.
   [[nodiscard]] std::span<const RadioNeighbor> neighbors() const override;
   [[nodiscard]] std::span<const SendReport> send_reports() const override;
+  [[nodiscard]] Route route_to(RobotId destination) override;
   [[nodiscard]] std::span<const double> reading(std::string_view name) const override;
 
   // Clamps each speed to +/- max_speed_mps; a NaN speed counts as 0 (stopping is the safe

@@ -59,6 +59,7 @@ RobotWorld::RobotWorld(const RobotSettings& settings, PluginLoader& loader) {
   state_.inboxes.resize(count * std::max<std::size_t>(state_.ports.size(), 1));
   state_.neighbors_enabled = settings.neighbor_tables;
   state_.neighbor_first.assign(count + 1, 0);
+  state_.route_asks.assign(count, {});
 
   PluginArgs physics_args;
   physics_args.params = settings.physics.params;
@@ -177,6 +178,23 @@ void RobotWorld::set_send_reports(std::span<const AddressedSendReport> reports) 
   for (const auto& [slot, report] : addressed) {
     state_.send_report_slots.push_back(slot);
     state_.send_reports.push_back(*report);
+  }
+}
+
+void RobotWorld::set_routes(std::span<const RouteAnswer> routes) {
+  state_.routes.clear();
+  for (const RouteAnswer& answer : routes) {
+    if (answer.query.robot < state_.bodies.size()) state_.routes.push_back(answer);
+  }
+}
+
+void RobotWorld::take_route_queries(std::vector<RouteQuery>& queries) {
+  queries.clear();
+  for (RobotId r = 0; r < state_.route_asks.size(); ++r) {
+    std::vector<RobotId>& asks = state_.route_asks[r];
+    std::sort(asks.begin(), asks.end());
+    for (const RobotId destination : asks) queries.push_back(RouteQuery{r, destination});
+    asks.clear();
   }
 }
 

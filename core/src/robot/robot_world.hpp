@@ -75,6 +75,13 @@ class RobotWorld {
   // robot or port no controller entry has is ignored.
   void set_send_reports(std::span<const AddressedSendReport> reports);
 
+  // The answers the next step's controllers see through route_to() (StepResult::routes, in its
+  // queries' order); an answer for a robot that is not one is ignored.
+  void set_routes(std::span<const RouteAnswer> routes);
+  // Moves the route_to() questions asked since the last call into `queries` (StepBatch's
+  // order: ascending by robot, then destination).
+  void take_route_queries(std::vector<RouteQuery>& queries);
+
   // True once a world plugin said its task is done: the run ends after the step that did it.
   [[nodiscard]] bool task_done() const { return worlds_->done_by().has_value(); }
   // The world plugin whose task_done() ended the run, if one did.

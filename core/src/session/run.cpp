@@ -125,6 +125,7 @@ NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, Step
       deliveries = &result.deliveries;
       world.set_neighbor_tables(result.neighbor_counts, result.neighbors);
       world.set_send_reports(result.send_reports);
+      world.set_routes(result.routes);
     }
     batch.step = step;
     batch.start = world.now();
@@ -138,6 +139,7 @@ NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, Step
 
     batch.messages.clear();
     world.step(*deliveries, batch.messages);
+    world.take_route_queries(batch.route_queries);
     if (traffic != nullptr) traffic->write(batch);
 
     const double before = thread_cpu_seconds();

@@ -337,6 +337,7 @@ void Dcf80211::exchange_failed() {
     // ns-3 reports DroppedMpdu before it dequeues the MPDU.
     const Packet packet = exchange_->packet;
     const NodeId next_hop = exchange_->next_hop;
+    context_->gave_up(packet, next_hop, exchange_->failed_attempts);
     if (exchange_->expired) {
       // Counted as dropped when it expired; ns-3's DroppedMpdu fires again at the limit.
       context_->link_failed(packet, next_hop);

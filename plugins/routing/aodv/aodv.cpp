@@ -65,7 +65,7 @@ void merge(std::vector<NodeId>& into, const std::vector<NodeId>& from) {
 
 PluginInfo Aodv::info() {
   return PluginInfo{
-      "aodv", "1.0.0",
+      "aodv", "1.1.0",
       "Ad hoc On-Demand Distance Vector routing (RFC 3561) with ns-3's default parameters",
       "Routes are discovered on demand: a node without a route buffers the packet (max_queue_len "
       "packets, max_queue_time_s each; overflow drops the oldest as queue_full, expiry as "
@@ -1081,6 +1081,16 @@ void Aodv::broadcast_control(const Message& message) {
 // closes the neighbour whose link-layer address is the MPDU's receiver, then purges: a next hop
 // that is not a neighbour, or whose address the ARP cache had not resolved when it was recorded,
 // breaks nothing, and neither does a broadcast; expired neighbours are reported all the same.
+Route Aodv::route_to(NodeId destination) const {
+  // Read as stored: a lookup would age the table, and asking must change nothing. A valid entry
+  // past its lifetime is what the next lookup turns invalid, so it counts as none already.
+  const RouteEntry* entry = table_.entry(destination);
+  if (entry == nullptr || !entry->is_valid() || entry->expires < context_->now()) {
+    return Route{RouteStatus::none, kNoNode, 0, {}};
+  }
+  return Route{RouteStatus::valid, entry->next_hop, entry->hop_count, {}};
+}
+
 void Aodv::link_failed(const Packet& packet, NodeId next_hop) {
   context_->count("link_failures");
   if (!params_.link_layer_feedback) return;

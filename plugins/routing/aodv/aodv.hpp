@@ -34,6 +34,7 @@ class Aodv final : public Routing {
   void send(Packet packet) override;
   void receive(Packet packet, NodeId from) override;
   void link_failed(const Packet& packet, NodeId next_hop) override;
+  [[nodiscard]] Route route_to(NodeId destination) const override;
 
   // Read-only views for tests that compile the plugin's sources in (the kernel never sees them).
   [[nodiscard]] const RoutingTable& routing_table() const { return table_; }

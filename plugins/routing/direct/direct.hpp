@@ -14,6 +14,7 @@ class Direct final : public Routing {
   void attach(RoutingContext& context) override { context_ = &context; }
   void send(Packet packet) override;
   void receive(Packet packet, NodeId from) override;
+  [[nodiscard]] Route route_to(NodeId destination) const override;
 
  private:
   RoutingContext* context_ = nullptr;

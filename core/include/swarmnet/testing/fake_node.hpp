@@ -125,6 +125,7 @@ class FakeMacContext final : public FakeNode<MacContext> {
     std::uint32_t attempts;
   };
   std::vector<Acknowledgement> acknowledgements;  // acknowledged() calls
+  std::vector<Acknowledgement> given_up;          // gave_up() calls
   std::uint64_t next_frame_uid = 1;
 
   void transmit(Frame frame, SimTime duration) override {
@@ -144,6 +145,9 @@ class FakeMacContext final : public FakeNode<MacContext> {
   }
   void acknowledged(const Packet& packet, NodeId next_hop, std::uint32_t attempts) override {
     acknowledgements.push_back({packet, next_hop, attempts});
+  }
+  void gave_up(const Packet& packet, NodeId next_hop, std::uint32_t attempts) override {
+    given_up.push_back({packet, next_hop, attempts});
   }
 };
 

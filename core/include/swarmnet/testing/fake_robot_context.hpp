@@ -54,6 +54,10 @@ class FakeRobotContext final : public RobotContext {
   // What send_reports() returns: the test writes the reports the network half would (message
   // ids as send() returned them: indices into `sent`).
   std::vector<SendReport> reports;
+  // What route_to() returns, by destination, as the network half would answer; a destination
+  // not in it gets RouteStatus::pending, as on the first ask. route_to() records each ask in
+  // `route_asks`.
+  std::map<RobotId, Route> routes;
   // World readings by name, as a world plugin would offer them (swarmnet/world.hpp).
   std::map<std::string, std::vector<double>, std::less<>> readings;
   // Requests the world offers; when not empty, request() refuses any other name, as the kernel
@@ -64,6 +68,7 @@ class FakeRobotContext final : public RobotContext {
   double right_mps = 0.0;
   std::vector<Sent> sent;
   std::vector<Request> requests;                                     // in the order made
+  std::vector<RobotId> route_asks;                                   // route_to() calls
   std::map<std::string, std::vector<double>, std::less<>> recorded;  // metric -> observations
   std::string shown_state;                                           // the last show_state()
 
@@ -116,6 +121,15 @@ class FakeRobotContext final : public RobotContext {
     return sent.size() - 1;
   }
   [[nodiscard]] std::span<const SendReport> send_reports() const override { return reports; }
+  [[nodiscard]] Route route_to(RobotId destination) override {
+    if (destination >= robots || destination == robot_id) {
+      throw std::invalid_argument("route_to(" + std::to_string(destination) +
+                                  "): not another robot");
+    }
+    route_asks.push_back(destination);
+    const auto it = routes.find(destination);
+    return it == routes.end() ? Route{RouteStatus::pending} : it->second;
+  }
   void record(std::string_view metric, double value) override {
     auto it = recorded.find(metric);
     if (it == recorded.end())
