@@ -151,9 +151,7 @@ void NetworkSimulator::answer_route_queries(std::span<const RouteQuery> queries,
   answers.clear();
   for (const RouteQuery& query : queries) {
     Route route = nodes_[query.robot]->routing().route_to(query.destination);
-    const bool valid = route.status == RouteStatus::valid;
-    if (route.status > RouteStatus::valid || route.status == RouteStatus::pending ||
-        (valid && (route.next_hop >= nodes_.size() || route.hops == 0))) {
+    if (!is_possible_answer(route, nodes_.size())) {
       throw std::logic_error("network: routing plugin '" + routing_name_ + "' answered node " +
                              std::to_string(query.robot) + "'s route_to(" +
                              std::to_string(query.destination) + ") with status " +
@@ -162,7 +160,7 @@ void NetworkSimulator::answer_route_queries(std::span<const RouteQuery> queries,
                              " hops (a valid route names a node and at least one hop; pending is "
                              "the kernel's)");
     }
-    if (!valid) route = Route{route.status};
+    if (route.status != RouteStatus::valid) route = Route{route.status};
     route.as_of = scheduler_.now();
     answers.push_back(RouteAnswer{query, route});
   }

@@ -291,9 +291,7 @@ ProtocolResult StepChannel::receive_routes(RecordReader& reader, StepResult& res
     (void)reader.get(a.route.hops);
     (void)reader.get(as_of);
     a.route.as_of = SimTime{as_of};
-    const bool valid = a.route.status == RouteStatus::valid;
-    if (a.route.status > RouteStatus::valid || a.route.status == RouteStatus::pending ||
-        (valid && (a.route.next_hop >= limits_.robots || a.route.hops == 0))) {
+    if (!is_possible_answer(a.route, limits_.robots)) {
       return over_limit("sent a route answer for robot " + std::to_string(robot) + " about " +
                         std::to_string(a.query.destination) + " with status " +
                         std::to_string(static_cast<unsigned>(a.route.status)) + ", next hop " +

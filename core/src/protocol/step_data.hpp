@@ -3,7 +3,7 @@
 // buffer, and decodes them from where they arrive; both halves see only these types.
 #pragma once
 
-#include <compare>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -43,7 +43,9 @@ struct RouteQuery {
   RobotId destination = kNoNode;
 
   friend bool operator==(const RouteQuery&, const RouteQuery&) = default;
-  friend auto operator<=>(const RouteQuery&, const RouteQuery&) = default;
+  friend bool operator<(const RouteQuery& a, const RouteQuery& b) {
+    return a.robot != b.robot ? a.robot < b.robot : a.destination < b.destination;
+  }
 };
 
 // Robot half -> network half: step `step` covers [start, start + step length).
@@ -62,6 +64,13 @@ struct RouteAnswer {
   RouteQuery query;
   Route route;
 };
+
+// Whether a routing protocol may give `route` in a network of `nodes` nodes: not pending (the
+// robot half's own status), and a valid route names a node as next hop and at least one hop.
+inline bool is_possible_answer(const Route& route, std::size_t nodes) {
+  if (route.status == RouteStatus::valid) return route.next_hop < nodes && route.hops > 0;
+  return route.status == RouteStatus::not_tracked || route.status == RouteStatus::none;
+}
 
 // One application-level delivery: message `message_id` reached robot `receiver`.
 struct Delivery {
