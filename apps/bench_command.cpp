@@ -54,9 +54,11 @@ double real_ns(const nlohmann::json& b) {
 int bench_transport_command(const std::filesystem::path& out, double min_time_s) {
   const auto binary = own_directory() / "transport_bench";
   if (!std::filesystem::exists(binary)) {
-    std::fprintf(
-        stderr, "swarmnet: error: %s is not built (cmake --build build --target transport_bench)\n",
-        binary.c_str());
+    std::fprintf(stderr,
+                 "swarmnet: error: %s is not built (./swarmnet bench transport installs "
+                 "libbenchmark-dev and builds it; by hand: cmake --build build --target "
+                 "transport_bench)\n",
+                 binary.c_str());
     return 2;
   }
   std::filesystem::create_directories(out.parent_path().empty() ? "." : out.parent_path());

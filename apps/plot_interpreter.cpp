@@ -60,7 +60,7 @@ std::string no_plot_interpreter_message(const PlotInterpreter& search) {
   }
   return message +
          "\ninstall Debian's python3 and python3-matplotlib (apt-get install python3 "
-         "python3-matplotlib; ./swarmnet does), or matplotlib for one of the above";
+         "python3-matplotlib; ./swarmnet plot does), or matplotlib for one of the above";
 }
 
 }  // namespace swarmnet

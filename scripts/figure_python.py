@@ -33,5 +33,5 @@ def require_matplotlib():
               f"{DEBIAN_PYTHON}", file=sys.stderr)
         os.execve(DEBIAN_PYTHON, [DEBIAN_PYTHON, *sys.argv], dict(os.environ, **{RESTARTED: "1"}))
     sys.exit(f"{sys.argv[0]}: matplotlib is not installed for {sys.executable} (nor for "
-             f"{DEBIAN_PYTHON}): install Debian's python3-matplotlib (./swarmnet does) or "
-             f"`pip install matplotlib` for this interpreter")
+             f"{DEBIAN_PYTHON}): install Debian's python3-matplotlib (./swarmnet install plot "
+             f"does) or `pip install matplotlib` for this interpreter")

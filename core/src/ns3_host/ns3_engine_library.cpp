@@ -27,8 +27,10 @@ LoadedModule load(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) {
     return {nullptr, path.string() +
-                         " does not exist: this SwarmNet was built without ns-3 (install "
-                         "libns3-dev, which ./swarmnet's bootstrap does, and rebuild)"};
+                         " does not exist: this SwarmNet was built without ns-3 (./swarmnet "
+                         "install ns3 installs libns3-dev, and the next ./swarmnet command "
+                         "builds the engine; built by hand: install libns3-dev, configure "
+                         "again and rebuild)"};
   }
   // Never closed (see the header): the handle lives as long as the process.
   void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);

@@ -88,13 +88,15 @@ std::string number(double value) {
 fs::path find_chromium() {
   return find_tool("SWARMNET_CHROMIUM", {"chromium", "chromium-browser", "google-chrome"},
                    "Chromium is needed to render frames and was not found on PATH; install it "
-                   "(Debian: apt-get install chromium) or set SWARMNET_CHROMIUM");
+                   "(Debian: apt-get install chromium; ./swarmnet view does for --png and "
+                   "--video) or set SWARMNET_CHROMIUM");
 }
 
 fs::path find_ffmpeg() {
   return find_tool("SWARMNET_FFMPEG", {"ffmpeg"},
                    "ffmpeg is needed to encode a video and was not found on PATH; install it "
-                   "(Debian: apt-get install ffmpeg) or set SWARMNET_FFMPEG");
+                   "(Debian: apt-get install ffmpeg; ./swarmnet view does for --video) or set "
+                   "SWARMNET_FFMPEG");
 }
 
 std::vector<std::string> chromium_dump_command(const fs::path& chromium,
