@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "command_runner.hpp"
@@ -36,6 +38,8 @@ void run_into(const std::filesystem::path& dir, const std::string& extra) {
 
 constexpr const char* kTraces[] = {"packets.csv", "mobility.ns2", "traffic.csv",
                                    "scenario.resolved.yaml"};
+// What controllers recorded per robot and sampled: compared when the first run wrote them.
+constexpr const char* kControllerOutputs[] = {"robot_metrics.csv", "series.csv"};
 
 // Runs each variant into the same run directory (the resolved scenario names it), keeping each
 // result, and expects every output identical to the first's.
@@ -53,6 +57,11 @@ void expect_identical_runs(const std::vector<std::string>& variants) {
       const std::string expected = read_file(first / file);
       EXPECT_FALSE(expected.empty()) << file;
       EXPECT_TRUE(expected == read_file(other / file))
+          << file << " differs between '" << variants[0] << "' and '" << variants[i] << "'";
+    }
+    for (const char* file : kControllerOutputs) {
+      if (!std::filesystem::exists(first / file)) continue;
+      EXPECT_TRUE(read_file(first / file) == read_file(other / file))
           << file << " differs between '" << variants[0] << "' and '" << variants[i] << "'";
     }
     EXPECT_EQ(summary_without_timing(first), summary_without_timing(other))
@@ -173,6 +182,22 @@ TEST(RunDeterminism, EveryTransportGivesIdenticalRouteAnswers) {
   EXPECT_GE(controllers["route_hops"]["min"].get<double>(), 1.0);
   EXPECT_EQ(controllers["route_age_s"]["min"].get<double>(), 0.0);  // the window just ended
   EXPECT_EQ(controllers["route_age_s"]["max"].get<double>(), 0.0);
+
+  // Per robot, the answers add up to the pooled count; the series has a row per answer.
+  const std::string per_robot = read_file(dir.path() / "asked" / "robot_metrics.csv");
+  double valid = 0.0;
+  std::istringstream rows(per_robot);
+  std::string row;
+  while (std::getline(rows, row)) {
+    if (row.find(",route_valid,") != std::string::npos) {
+      valid += std::stod(row.substr(row.find(",route_valid,") + 13));
+    }
+  }
+  EXPECT_EQ(valid, controllers["route_valid"]["count"].get<double>()) << per_robot;
+  const std::string series = read_file(dir.path() / "asked" / "series.csv");
+  EXPECT_EQ(series.rfind("time_ns,robot,series,value\n", 0), 0U) << series.substr(0, 200);
+  EXPECT_EQ(static_cast<double>(std::count(series.begin(), series.end(), '\n')) - 1.0,
+            controllers["route_age_s"]["count"].get<double>());
 
   // The same run with a controller that sends alike and never asks: identical packets.
   run_into(dir.path() / "quiet", probe + " --set 'robots.controllers.1.params.ask=false'");

@@ -96,6 +96,7 @@ class RecordingRobot final : public RobotContext {
   void record(std::string_view metric, double value) override {
     records.emplace_back(std::string(metric), value);
   }
+  void sample(std::string_view /*series*/, double /*value*/) override {}
   void show_state(std::string_view /*label*/) override {}
 
   std::vector<std::pair<std::string, double>> records;

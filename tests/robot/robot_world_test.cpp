@@ -6,6 +6,8 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -187,6 +189,7 @@ class RobotContextTest : public ::testing::Test {
     state_.rays_per_robot = 2;
     state_.proximity = {1, 2, 3, 4, 5, 6};
     state_.outbox = &outbox_;
+    state_.metrics = RobotMetrics(3);
   }
   RobotWorldState state_;
   std::vector<AppMessage> outbox_;
@@ -282,21 +285,65 @@ TEST_F(RobotContextTest, SendStampsIdsAndRefusesBadMessages) {
   EXPECT_EQ(state_.next_message_id, 2U);
 }
 
-TEST_F(RobotContextTest, RecordSummarisesPerMetric) {
+TEST_F(RobotContextTest, RecordSummarisesPerMetricPooledAndPerRobot) {
   WorldRobotContext a(state_, 0);
   WorldRobotContext b(state_, 1);
   a.record("delay", 2.0);
   b.record("delay", -1.0);
   b.record("delay", 5.0);
   a.record("count", 1.0);
-  ASSERT_EQ(state_.metrics.size(), 2U);
-  const MetricSummary& delay = state_.metrics.find("delay")->second;
+  const ControllerMetrics pooled = state_.metrics.pooled();
+  ASSERT_EQ(pooled.size(), 2U);
+  const MetricSummary& delay = pooled.find("delay")->second;
   EXPECT_EQ(delay.count, 3U);
   EXPECT_EQ(delay.sum, 6.0);
   EXPECT_EQ(delay.min, -1.0);
   EXPECT_EQ(delay.max, 5.0);
   EXPECT_EQ(delay.mean(), 2.0);
-  EXPECT_EQ(state_.metrics.begin()->first, "count");  // name order
+  EXPECT_EQ(pooled.begin()->first, "count");  // name order
+
+  EXPECT_EQ(state_.metrics.of(0, "delay").count, 1U);
+  EXPECT_EQ(state_.metrics.of(0, "delay").sum, 2.0);
+  EXPECT_EQ(state_.metrics.of(1, "delay").count, 2U);
+  EXPECT_EQ(state_.metrics.of(1, "delay").min, -1.0);
+  EXPECT_EQ(state_.metrics.of(1, "count").count, 0U);
+  EXPECT_EQ(state_.metrics.of(2, "delay").count, 0U);
+}
+
+TEST_F(RobotContextTest, SampleWritesOneRowPerCallWithTimeAndRobot) {
+  std::ostringstream out;
+  state_.series = MetricSeries([&]() -> std::ostream& { return out; });
+  WorldRobotContext a(state_, 0);
+  WorldRobotContext c(state_, 2);
+  state_.now = from_seconds(0.5);
+  c.sample("hops", 3.0);
+  a.sample("hops", 0.25);
+  state_.now = from_seconds(0.6);
+  a.sample("rssi, smoothed", -71.5);
+  EXPECT_EQ(out.str(),
+            "time_ns,robot,series,value\n"
+            "500000000,2,hops,3\n"
+            "500000000,0,hops,0.25\n"
+            "600000000,0,\"rssi, smoothed\",-71.5\n");
+  EXPECT_EQ(state_.series.rows(), 3U);
+}
+
+TEST_F(RobotContextTest, SampleRefusesWhatCannotBePlotted) {
+  std::ostringstream out;
+  state_.series = MetricSeries([&]() -> std::ostream& { return out; });
+  WorldRobotContext a(state_, 1);
+  EXPECT_THROW(a.sample("", 1.0), std::invalid_argument);
+  try {
+    a.sample("link", std::numeric_limits<double>::quiet_NaN());
+    FAIL();
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("robot 1"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("link"), std::string::npos) << error.what();
+  }
+  EXPECT_EQ(out.str(), "");  // nothing opened for a refused sample
+  RobotWorldState unwritten;
+  WorldRobotContext b(unwritten, 0);
+  EXPECT_THROW(b.sample("x", 1.0), std::logic_error);
 }
 
 }  // namespace

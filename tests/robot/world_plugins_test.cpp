@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -43,10 +44,33 @@ std::string error_of(const std::function<void()>& action) {
   return "";
 }
 
+TEST_F(WorldPluginsTest, SamplesOfControllersAndWorldsAreRowsInCallOrder) {
+  RobotSettings s = settings({{"sample_steps", true}}, {{"sample_clock", true}});
+  std::ostringstream series;
+  int opened = 0;
+  s.open_series = [&]() -> std::ostream& {
+    ++opened;
+    return series;
+  };
+  RobotWorld world(s, loader_);
+  run(world, 2);
+  // Each step: robots 0..2 at its start read the clock, then the world's post_step at its end.
+  EXPECT_EQ(series.str(),
+            "time_ns,robot,series,value\n"
+            "0,0,clock_s,0\n0,1,clock_s,0\n0,2,clock_s,0\n"
+            "100000000,,post_steps,1\n"
+            "100000000,0,clock_s,0.1\n100000000,1,clock_s,0.1\n100000000,2,clock_s,0.1\n"
+            "200000000,,post_steps,2\n");
+  EXPECT_EQ(opened, 1);
+  EXPECT_EQ(world.series_rows(), 8U);
+  EXPECT_EQ(world.robot_metrics().of(1, "clock_s").count, 2U);
+  EXPECT_EQ(world.robot_metrics().of(1, "clock_s").max, 0.1);
+}
+
 TEST_F(WorldPluginsTest, ControllersReadTheWorldAtTheStartOfEachStep) {
   RobotWorld world(settings(), loader_);
   run(world, 10);
-  const MetricSummary& clock = world.controller_metrics().at("clock_s");
+  const MetricSummary clock = world.controller_metrics().at("clock_s");
   EXPECT_EQ(clock.count, 30u);
   EXPECT_DOUBLE_EQ(clock.min, 0.0);
   EXPECT_NEAR(clock.max, 0.9, 1e-12);  // pre_step's time: the step's start

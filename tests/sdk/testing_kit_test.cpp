@@ -1,6 +1,7 @@
 // The SDK test kit itself: the scheduler's order, the fakes' records, plugin_args' checks.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -101,10 +102,21 @@ TEST(FakeRobotContext, ActuatorsBehaveAsTheKernelPromises) {
   robot.record("x", 1.0);
   robot.record("x", 3.0);
   EXPECT_EQ(robot.recorded.at("x"), (std::vector<double>{1.0, 3.0}));
+  robot.sample("link", 0.5);
   robot.set_wheel_speeds(0.5, 0.5);
   robot.advance();
   EXPECT_NEAR(robot.pose_position.x(), 0.05, 1e-12);
   EXPECT_EQ(robot.now(), from_seconds(0.1));
+  robot.sample("link", 0.75);
+  ASSERT_EQ(robot.sampled.at("link").size(), 2U);
+  EXPECT_EQ(robot.sampled.at("link")[0].at, SimTime{});
+  EXPECT_EQ(robot.sampled.at("link")[1].at, from_seconds(0.1));
+  EXPECT_EQ(robot.sampled.at("link")[1].value, 0.75);
+  // Refused as a run refuses them.
+  EXPECT_THROW(robot.sample("", 1.0), std::invalid_argument);
+  EXPECT_THROW(robot.sample("two\nlines", 1.0), std::invalid_argument);
+  EXPECT_THROW(robot.sample("link", std::numeric_limits<double>::infinity()),
+               std::invalid_argument);
 }
 
 // A controller's decision on its send reports, tested on the kit: a beacon whose report says it

@@ -163,6 +163,38 @@ TEST_F(RunDirectory, MalformedFilesAreNamedWithTheLine) {
   EXPECT_NE(error().find("scenario.resolved.yaml: not valid YAML"), std::string::npos) << error();
 }
 
+// series.csv: each series binned over the run's 2 s (200 bins of 10 ms), mean, least and
+// greatest over the robots; a world's series apart; quoted names read whole.
+TEST_F(RunDirectory, SampledSeriesAreBinnedForTheChart) {
+  write("series.csv",
+        "time_ns,robot,series,value\n"
+        "0,0,\"link, \"\"share\"\"\",0.25\n"
+        "0,1,\"link, \"\"share\"\"\",0.75\n"
+        "1000000000,1,\"link, \"\"share\"\"\",1\n"
+        "1500000000,,done,3\n");
+  const ViewData view = read_view_data(dir_);
+  const auto& series = view.meta.at("series");
+  EXPECT_DOUBLE_EQ(series.at("bin_s").get<double>(), 0.01);
+  ASSERT_EQ(series.at("series").size(), 2U);
+  const auto& done = series.at("series")[0];
+  EXPECT_EQ(done.at("name"), "done (world)");
+  EXPECT_EQ(done.at("mean")[150], 3.0);
+  EXPECT_TRUE(done.at("mean")[0].is_null());
+  const auto& link = series.at("series")[1];
+  EXPECT_EQ(link.at("name"), "link, \"share\"");
+  EXPECT_EQ(link.at("mean")[0], 0.5);
+  EXPECT_EQ(link.at("low")[0], 0.25);
+  EXPECT_EQ(link.at("high")[0], 0.75);
+  EXPECT_EQ(link.at("mean")[100], 1.0);
+  EXPECT_EQ(series.at("not_shown"), 0U);
+
+  write("series.csv", "time_ns,robot,series,value\n0,0,a,x\n");
+  EXPECT_NE(error().find("series.csv: line 2: value 'x' is not a number"), std::string::npos)
+      << error();
+  write("series.csv", "time,robot\n");
+  EXPECT_NE(error().find("series.csv: line 1: unexpected header"), std::string::npos) << error();
+}
+
 TEST_F(RunDirectory, PacketEventsInferThePreviousHop) {
   write("packets.csv",
         "time_ns,event,node,uid,message_id,source,destination,hops,bytes,detail\n"

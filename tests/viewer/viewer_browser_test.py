@@ -200,6 +200,27 @@ def main():
         check('<div id="status" hidden="">ok</div>' in dom.stdout, "the interactive page failed")
         check(not console_errors(dom.stderr), f"console errors: {console_errors(dom.stderr)}")
 
+        # A run with sampled series: the chart offers each, and draws the one picked.
+        with open(run / "series.csv", "w") as f:
+            f.write("time_ns,robot,series,value\n")
+            for step in range(50):
+                for robot in range(3):
+                    f.write(f"{step * 100000000},{robot},\"link, share\",{0.5 + 0.01 * robot}\n")
+                f.write(f"{step * 100000000},,events_done,{step}\n")
+        series_page = work / "series.html"
+        done = swarmnet(args.bin, "view", run, "--out", series_page)
+        check(done.returncode == 0, f"swarmnet view of a run with series.csv failed: {done.stderr}")
+        dom = subprocess.run(chromium_command(chromium, work / "profile", [
+            "--window-size=1100,720", "--virtual-time-budget=1000", "--dump-dom",
+            f"file://{series_page}#t=2"]), capture_output=True, text=True, timeout=120)
+        check('<option value="0">Series: events_done (world)</option>' in dom.stdout and
+              '<option value="1">Series: link, share</option>' in dom.stdout,
+              "the chart does not offer the sampled series: "
+              + "".join(re.findall(r'<select id="chart-pick".*?</select>', dom.stdout, re.S)))
+        check('<div id="status" hidden="">ok</div>' in dom.stdout, "the page with series failed")
+        check(not console_errors(dom.stderr), f"console errors: {console_errors(dom.stderr)}")
+        (run / "series.csv").unlink()
+
         # 2. A page whose data is broken: an error shown and on the console, never a blank page.
         broken = work / "broken.html"
         broken.write_text(re.sub(r'(<script type="application/json" id="meta">).*?(</script>)',

@@ -100,8 +100,14 @@ class RobotContext {
   // std::invalid_argument for a name no world offers, or arguments the world refuses.
   virtual void request(std::string_view name, std::span<const double> args) = 0;
 
-  // Adds one observation of a named metric; summary.json reports count, sum, mean, min and max.
+  // Adds one observation of a named metric: summary.json reports its count, sum, mean, min and
+  // max over all robots, robot_metrics.csv the same per robot.
   virtual void record(std::string_view metric, double value) = 0;
+  // Adds the value of time series `series` for this robot at now(): one row of series.csv
+  // (time, robot, series, value), which `swarmnet plot` and the viewer's chart read. Throws
+  // std::invalid_argument for an empty name, a name with a line break, or a value that is
+  // not finite.
+  virtual void sample(std::string_view series, double value) = 0;
 
   // For the viewer (`swarmnet view`, docs/viewer.md): this robot's state now, as a short label
   // such as "exploring" ("" for none). Call it every step or only on a change: the run records

@@ -33,7 +33,7 @@ namespace swarmnet {
 // 8: send options and reports (RobotContext::send's options, send_reports; Packet::hop_limit;
 // MacContext::acknowledged; Mac::acknowledges_unicasts). 9: RobotContext::route_to and
 // Routing::route_to; RadioNeighbor's unicast exchanges; MacContext::gave_up.
-inline constexpr std::uint32_t kAbiVersion = 9;
+inline constexpr std::uint32_t kAbiVersion = 10;
 
 enum class PluginKind : std::uint8_t { physics, propagation, mac, routing, controller, world };
 

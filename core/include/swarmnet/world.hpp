@@ -57,6 +57,10 @@ class WorldContext {
   // Adds one observation of a named metric; summary.json reports count, sum, mean, min and max
   // under "world", beside the controllers' metrics.
   virtual void record(std::string_view metric, double value) = 0;
+  // Adds the value of time series `series` at now(): a row of series.csv with no robot (see
+  // RobotContext::sample). Throws std::invalid_argument for an empty name, a name with a line
+  // break, or a value that is not finite.
+  virtual void sample(std::string_view series, double value) = 0;
 
   // For the viewer (`swarmnet view`, docs/viewer.md): a thing of the task to draw, e.g. an
   // event or a charger, as a disc of `radius_m` at `position`. `id` is the world's own (unique

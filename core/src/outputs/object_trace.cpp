@@ -1,19 +1,8 @@
 #include "outputs/object_trace.hpp"
 
-#include <array>
-#include <charconv>
+#include "text/shortest_number.hpp"
 
 namespace swarmnet {
-
-namespace {
-
-void write_real(std::ostream& out, double value) {
-  std::array<char, 32> text{};
-  const auto result = std::to_chars(text.data(), text.data() + text.size(), value);
-  out.write(text.data(), result.ptr - text.data());
-}
-
-}  // namespace
 
 ObjectTraceWriter::ObjectTraceWriter(std::ostream& out, SimTime step) : out_(out), step_(step) {
   out_ << "step,time_ns,object,x_m,y_m,heading_rad\n";
@@ -23,11 +12,11 @@ void ObjectTraceWriter::sample(std::uint64_t step_index, std::span<const ObjectP
   const std::int64_t time_ns = step_.count() * static_cast<std::int64_t>(step_index);
   for (std::size_t i = 0; i < poses.size(); ++i) {
     out_ << step_index << ',' << time_ns << ',' << i << ',';
-    write_real(out_, poses[i].position.x());
+    write_shortest(out_, poses[i].position.x());
     out_ << ',';
-    write_real(out_, poses[i].position.y());
+    write_shortest(out_, poses[i].position.y());
     out_ << ',';
-    write_real(out_, poses[i].heading_rad);
+    write_shortest(out_, poses[i].heading_rad);
     out_ << '\n';
   }
 }

@@ -17,6 +17,10 @@ inline constexpr const char* kSendOptionsFile = "send_options.csv";
 inline constexpr const char* kObjectTraceFile = "objects.csv";  // outputs/object_trace.hpp
 // What plugins asked the viewer to show (robot/view_record.hpp); only when one did.
 inline constexpr const char* kViewStatesFile = "view_states.csv";
+// What controllers record(), per robot (robot/robot_metrics.hpp); only when one recorded.
+inline constexpr const char* kRobotMetricsFile = "robot_metrics.csv";
+// What controllers and worlds sample() (robot/metric_series.hpp); only when one sampled.
+inline constexpr const char* kSeriesFile = "series.csv";
 // The replay page `swarmnet view` and `swarmnet run --view` write (docs/viewer.md).
 inline constexpr const char* kViewPageFile = "view.html";
 

@@ -119,7 +119,11 @@ void WorldRobotContext::request(std::string_view name, std::span<const double> a
 }
 
 void WorldRobotContext::record(std::string_view metric, double value) {
-  record_metric(state_->metrics, metric, value);
+  state_->metrics.add(id_, metric, value);
+}
+
+void WorldRobotContext::sample(std::string_view series, double value) {
+  state_->series.sample(state_->now, id_, series, value);
 }
 
 void WorldRobotContext::show_state(std::string_view label) {

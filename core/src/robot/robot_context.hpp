@@ -8,7 +8,8 @@
 #include <vector>
 
 #include "protocol/step_data.hpp"
-#include "robot/controller_metrics.hpp"
+#include "robot/metric_series.hpp"
+#include "robot/robot_metrics.hpp"
 #include "robot/view_record.hpp"
 #include "swarmnet/controller.hpp"
 #include "swarmnet/robot_body.hpp"
@@ -44,7 +45,8 @@ struct RobotWorldState {
   double step_s = 0.0;
   std::uint64_t next_message_id = 0;
   std::vector<AppMessage>* outbox = nullptr;  // where send() appends
-  ControllerMetrics metrics;
+  RobotMetrics metrics;                       // what controllers record()
+  MetricSeries series;                        // what controllers and worlds sample()
   // Robots a world switched off (1): their controllers no longer run (swarmnet/world.hpp). A
   // switch-off asked for during a step is pending (2) until the next step begins.
   std::vector<std::uint8_t> switched_off;
@@ -102,6 +104,7 @@ class WorldRobotContext final : public RobotContext {
                      const SendOptions& options) override;
   void request(std::string_view name, std::span<const double> args) override;
   void record(std::string_view metric, double value) override;
+  void sample(std::string_view series, double value) override;
   void show_state(std::string_view label) override;
 
  private:

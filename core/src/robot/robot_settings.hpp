@@ -4,6 +4,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <ostream>
 #include <vector>
 
 #include "plugin/plugin_choice.hpp"
@@ -42,6 +44,9 @@ struct RobotSettings {
   PluginChoice physics;
   std::vector<PluginChoice> worlds;  // world plugins, run in this order (swarmnet/world.hpp)
   bool neighbor_tables = false;      // network.neighbors.enabled: neighbors() answers
+  // Opens series.csv, at the first sample() (robot/metric_series.hpp); without it sample()
+  // throws std::logic_error.
+  std::function<std::ostream&()> open_series;
 };
 
 }  // namespace swarmnet

@@ -60,6 +60,8 @@ RobotWorld::RobotWorld(const RobotSettings& settings, PluginLoader& loader) {
   state_.neighbors_enabled = settings.neighbor_tables;
   state_.neighbor_first.assign(count + 1, 0);
   state_.route_asks.assign(count, {});
+  state_.metrics = RobotMetrics(count);
+  state_.series = MetricSeries(settings.open_series);
 
   PluginArgs physics_args;
   physics_args.params = settings.physics.params;

@@ -89,7 +89,10 @@ class RobotWorld {
   // Calls every world's end(); once, after the last step.
   void end_worlds() { worlds_->end(); }
 
-  [[nodiscard]] const ControllerMetrics& controller_metrics() const { return state_.metrics; }
+  // What controllers record(): pooled over robots, and per robot (robot/robot_metrics.hpp).
+  [[nodiscard]] ControllerMetrics controller_metrics() const { return state_.metrics.pooled(); }
+  [[nodiscard]] const RobotMetrics& robot_metrics() const { return state_.metrics; }
+  [[nodiscard]] std::uint64_t series_rows() const { return state_.series.rows(); }
   // What controllers and worlds asked the viewer to show (robot/view_record.hpp).
   [[nodiscard]] const ViewRecord& view_record() const { return state_.view; }
   [[nodiscard]] const ControllerMetrics& world_metrics() const { return worlds_->metrics(); }

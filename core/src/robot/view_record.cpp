@@ -1,19 +1,8 @@
 #include "robot/view_record.hpp"
 
-#include <array>
-#include <charconv>
+#include "text/shortest_number.hpp"
 
 namespace swarmnet {
-
-namespace {
-
-void write_number(std::ostream& out, double value) {
-  std::array<char, 32> text{};
-  const auto result = std::to_chars(text.data(), text.data() + text.size(), value);
-  out.write(text.data(), result.ptr - text.data());
-}
-
-}  // namespace
 
 std::string csv_safe_label(std::string_view label) {
   std::string safe(label);
@@ -63,11 +52,11 @@ void ViewRecord::write_csv(std::ostream& out) const {
         break;
       case Entity::object:
         out << "object," << row.id << ',' << row.shown.kind << ',' << row.shown.state << ',';
-        write_number(out, row.shown.position.x());
+        write_shortest(out, row.shown.position.x());
         out << ',';
-        write_number(out, row.shown.position.y());
+        write_shortest(out, row.shown.position.y());
         out << ',';
-        write_number(out, row.shown.radius_m);
+        write_shortest(out, row.shown.radius_m);
         out << '\n';
         break;
       case Entity::hidden:

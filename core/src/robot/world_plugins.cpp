@@ -141,6 +141,10 @@ void WorldPlugins::record(std::string_view metric, double value) {
   record_metric(metrics_, metric, value);
 }
 
+void WorldPlugins::sample(std::string_view series, double value) {
+  state_.series.sample(state_.now, std::nullopt, series, value);
+}
+
 void WorldPlugins::show_object(std::uint32_t id, std::string_view kind, std::string_view state,
                                Vec2 position, double radius_m) {
   state_.view.object(state_.now, id, kind, state, position, radius_m);

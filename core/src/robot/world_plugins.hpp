@@ -67,6 +67,7 @@ class WorldPlugins final : public WorldContext {
   [[nodiscard]] bool switched_off(RobotId robot) const override;
   void switch_off(RobotId robot) override;
   void record(std::string_view metric, double value) override;
+  void sample(std::string_view series, double value) override;
   void show_object(std::uint32_t id, std::string_view kind, std::string_view state, Vec2 position,
                    double radius_m) override;
   void hide_object(std::uint32_t id) override;

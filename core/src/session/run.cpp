@@ -180,7 +180,13 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
     // Under its final name from the start, as run.log: both say what ran, also when it failed.
     write_file_atomically(outcome.dir / kResolvedScenarioFile, scenario.resolved_yaml);
     log_plugins(log, scenario, loader);
-    RobotWorld world(scenario.robot_settings(), loader);
+    std::optional<AtomicFile> series_file;  // only once a plugin sampled
+    RobotSettings robot_settings = scenario.robot_settings();
+    robot_settings.open_series = [&]() -> std::ostream& {
+      series_file.emplace(outcome.dir / kSeriesFile);
+      return series_file->stream();
+    };
+    RobotWorld world(robot_settings, loader);
 
     std::optional<AtomicFile> mobility_file;
     std::optional<MobilityTraceWriter> mobility;
@@ -288,6 +294,13 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
     if (objects_file) commit.add(*objects_file);
     if (traffic_file) commit.add(*traffic_file);
     if (send_options_file) commit.add(*send_options_file);
+    if (series_file) commit.add(*series_file);
+    std::optional<AtomicFile> robot_metrics_file;
+    if (!world.robot_metrics().empty()) {
+      robot_metrics_file.emplace(outcome.dir / kRobotMetricsFile);
+      world.robot_metrics().write_csv(robot_metrics_file->stream());
+      commit.add(*robot_metrics_file);
+    }
     std::optional<AtomicFile> view_file;
     if (!world.view_record().empty()) {
       view_file.emplace(outcome.dir / kViewStatesFile);
@@ -315,7 +328,8 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
     summary.timings = {wall_s, robot_cpu, report.network_cpu_s,
                        loop.transport_cpu_s + report.transport_cpu_s};
     summary.network = &report;
-    summary.controllers = &world.controller_metrics();
+    const ControllerMetrics controller_metrics = world.controller_metrics();
+    summary.controllers = &controller_metrics;
     summary.steps = loop.steps;
     summary.ended = SummaryInputs::Ended{world.done_by()};
     if (!scenario.worlds.empty()) summary.world = &world.world_metrics();

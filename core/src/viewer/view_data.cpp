@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -53,18 +54,33 @@ class BlobWriter {
   nlohmann::ordered_json arrays_ = nlohmann::ordered_json::object();
 };
 
-// Splits one CSV line (no quoting: SwarmNet writes none) into fields.
-void split(std::string_view line, std::vector<std::string_view>& fields) {
+// Splits one CSV line into fields. A quoted field (SwarmNet quotes names that hold a comma or a
+// quote, as RFC 4180 does) is unquoted in place, so every view points into `line`.
+void split(std::string& line, std::vector<std::string_view>& fields) {
   fields.clear();
-  std::size_t start = 0;
+  std::size_t write = 0;
+  std::size_t read = 0;
   while (true) {
-    const std::size_t comma = line.find(',', start);
-    if (comma == std::string_view::npos) {
-      fields.push_back(line.substr(start));
-      return;
+    const std::size_t start = write;
+    if (read < line.size() && line[read] == '"') {
+      ++read;
+      while (read < line.size()) {
+        if (line[read] == '"') {
+          if (read + 1 < line.size() && line[read + 1] == '"') {
+            line[write++] = '"';
+            read += 2;
+            continue;
+          }
+          ++read;
+          break;
+        }
+        line[write++] = line[read++];
+      }
     }
-    fields.push_back(line.substr(start, comma - start));
-    start = comma + 1;
+    while (read < line.size() && line[read] != ',') line[write++] = line[read++];
+    fields.emplace_back(line.data() + start, write - start);
+    if (read >= line.size()) return;
+    ++read;  // the comma
   }
 }
 
@@ -552,6 +568,68 @@ std::vector<float> read_movables(const fs::path& file, std::size_t movables, std
 
 }  // namespace
 
+constexpr std::string_view kSeriesHeader = "time_ns,robot,series,value";
+
+// series.csv (what plugins sampled) for the panel's chart: each series' samples in time bins,
+// as the mean, least and greatest value in each bin over every robot that sampled it (null where
+// none did). A world's series (no robot) is its own series, named "NAME (world)". Series in name
+// order; beyond `max_series`, the rest are counted, not kept.
+nlohmann::ordered_json read_series(const fs::path& file, double duration_s,
+                                   std::size_t max_series) {
+  constexpr std::size_t kBins = 200;
+  struct Bins {
+    std::vector<double> sum, low, high;
+    std::vector<std::uint64_t> count;
+  };
+  const double bin_s = std::max(duration_s, 1e-9) / static_cast<double>(kBins);
+  std::map<std::string, Bins, std::less<>> series;
+  CsvReader csv(file, kSeriesHeader);
+  std::vector<std::string_view> f;
+  std::string name;
+  while (csv.next(f, 4)) {
+    const auto time_ns = csv.number<std::int64_t>(f[0], "time_ns");
+    if (!f[1].empty()) (void)csv.number<std::uint32_t>(f[1], "robot");
+    const auto value = csv.number<double>(f[3], "value");
+    name.assign(f[2]);
+    if (f[1].empty()) name += " (world)";
+    auto it = series.find(name);
+    if (it == series.end()) {
+      it = series.emplace(name, Bins{}).first;
+      it->second.sum.assign(kBins, 0.0);
+      it->second.low.assign(kBins, std::numeric_limits<double>::infinity());
+      it->second.high.assign(kBins, -std::numeric_limits<double>::infinity());
+      it->second.count.assign(kBins, 0);
+    }
+    const double t = static_cast<double>(time_ns) * 1e-9;
+    const auto bin = std::min(kBins - 1, static_cast<std::size_t>(std::max(0.0, t / bin_s)));
+    Bins& b = it->second;
+    b.sum[bin] += value;
+    b.low[bin] = std::min(b.low[bin], value);
+    b.high[bin] = std::max(b.high[bin], value);
+    ++b.count[bin];
+  }
+  nlohmann::ordered_json kept = nlohmann::ordered_json::array();
+  for (const auto& [label, b] : series) {
+    if (kept.size() == max_series) break;
+    nlohmann::ordered_json mean = nlohmann::ordered_json::array();
+    nlohmann::ordered_json low = nlohmann::ordered_json::array();
+    nlohmann::ordered_json high = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < kBins; ++i) {
+      if (b.count[i] == 0) {
+        mean.push_back(nullptr);
+        low.push_back(nullptr);
+        high.push_back(nullptr);
+      } else {
+        mean.push_back(b.sum[i] / static_cast<double>(b.count[i]));
+        low.push_back(b.low[i]);
+        high.push_back(b.high[i]);
+      }
+    }
+    kept.push_back({{"name", label}, {"mean", mean}, {"low", low}, {"high", high}});
+  }
+  return {{"bin_s", bin_s}, {"series", kept}, {"not_shown", series.size() - kept.size()}};
+}
+
 ViewData read_view_data(const fs::path& run_dir, const ViewLimits& limits) {
   if (!fs::is_directory(run_dir)) throw RunError(run_dir.string() + ": not a directory");
   const Scene scene = read_scene(run_dir / kResolvedScenarioFile);
@@ -696,6 +774,8 @@ ViewData read_view_data(const fs::path& run_dir, const ViewLimits& limits) {
         {"reasons", packets.reasons}, {"kept_every", packets.kept_every}, {"lines", packets.lines}};
     meta["panel"] = panel;
   }
+  const fs::path series_file = run_dir / kSeriesFile;
+  if (fs::exists(series_file)) meta["series"] = read_series(series_file, duration_s, limits.series);
   meta["arrays"] = blob.arrays();
   view.blob = std::move(blob.bytes());
   return view;

@@ -12,6 +12,8 @@
 //   packets.csv             optional: messages (send, forward, deliver, drop)
 //   view_states.csv         optional: robot states and world objects plugins showed
 //   objects.csv             optional: poses of the arena's movable objects
+//   series.csv              optional: what plugins sampled, binned for the panel's chart as
+//                           meta.series = {bin_s, series: [{name, mean, low, high}], not_shown}
 // Every problem (missing, truncated or malformed file) is a RunError naming the file, and the
 // line where there is one.
 //
@@ -47,6 +49,7 @@ struct ViewLimits {
   std::size_t robot_frames = 4'000'000;  // frames x robots kept at most
   std::size_t packet_events = 400'000;   // packet events kept at most
   std::size_t max_frames = 20'000;       // frames kept at most, whatever the swarm's size
+  std::size_t series = 32;               // series of series.csv the chart offers at most
 };
 
 struct ViewData {

@@ -16,6 +16,7 @@
 
 #include "swarmnet/controller.hpp"
 #include "swarmnet/packet.hpp"
+#include "swarmnet/testing/metric_log.hpp"
 
 namespace swarmnet::testing {
 
@@ -67,10 +68,11 @@ class FakeRobotContext final : public RobotContext {
   double left_mps = 0.0;
   double right_mps = 0.0;
   std::vector<Sent> sent;
-  std::vector<Request> requests;                                     // in the order made
-  std::vector<RobotId> route_asks;                                   // route_to() calls
-  std::map<std::string, std::vector<double>, std::less<>> recorded;  // metric -> observations
-  std::string shown_state;                                           // the last show_state()
+  std::vector<Request> requests;    // in the order made
+  std::vector<RobotId> route_asks;  // route_to() calls
+  RecordedMetrics recorded;         // metric -> observations
+  SampledSeries sampled;            // sample() calls by series name, with the time of each
+  std::string shown_state;          // the last show_state()
 
   [[nodiscard]] RobotId id() const override { return robot_id; }
   [[nodiscard]] std::size_t robot_count() const override { return robots; }
@@ -131,10 +133,10 @@ class FakeRobotContext final : public RobotContext {
     return it == routes.end() ? Route{RouteStatus::pending} : it->second;
   }
   void record(std::string_view metric, double value) override {
-    auto it = recorded.find(metric);
-    if (it == recorded.end())
-      it = recorded.emplace(std::string(metric), std::vector<double>{}).first;
-    it->second.push_back(value);
+    log_record(recorded, metric, value);
+  }
+  void sample(std::string_view series, double value) override {
+    log_sample(sampled, time, series, value);
   }
   void show_state(std::string_view label) override { shown_state = label; }
 

@@ -2,14 +2,17 @@
 // driving a world plugin without a simulation.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "swarmnet/testing/metric_log.hpp"
 #include "swarmnet/world.hpp"
 
 namespace swarmnet::testing {
@@ -32,7 +35,8 @@ class FakeWorldContext final : public WorldContext {
   std::vector<double> max_speeds;
   // Effects: read by the test.
   std::vector<bool> off;
-  std::map<std::string, std::vector<double>, std::less<>> recorded;  // metric -> observations
+  RecordedMetrics recorded;  // metric -> observations
+  SampledSeries sampled;     // sample() calls by series name, with the time of each
   // What show_object() last said of each object id; hide_object() removes the entry.
   struct ShownObject {
     std::string kind;
@@ -52,10 +56,10 @@ class FakeWorldContext final : public WorldContext {
   [[nodiscard]] bool switched_off(RobotId robot) const override { return off.at(robot); }
   void switch_off(RobotId robot) override { off.at(robot) = true; }
   void record(std::string_view metric, double value) override {
-    auto it = recorded.find(metric);
-    if (it == recorded.end())
-      it = recorded.emplace(std::string(metric), std::vector<double>{}).first;
-    it->second.push_back(value);
+    log_record(recorded, metric, value);
+  }
+  void sample(std::string_view series, double value) override {
+    log_sample(sampled, time, series, value);
   }
   void show_object(std::uint32_t id, std::string_view kind, std::string_view state, Vec2 position,
                    double radius_m) override {

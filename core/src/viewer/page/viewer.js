@@ -455,52 +455,110 @@
   notes.push('Headings: ' + meta.headings + '. Wheel: zoom; drag: pan; hover a robot for details.');
   document.getElementById('notes').textContent = notes.join(' ');
 
-  // The panel's chart: delivery ratio (0..1, green) and mean delay (orange) per interval.
+  // The panel's chart: the network's delivery ratio (0..1, green) and mean delay (orange) per
+  // interval, or one series the plugins sampled (series.csv): its mean over robots per interval
+  // (blue) between the least and greatest value (shaded).
   const chart = document.getElementById('chart');
   const cctx = chart.getContext('2d');
-  function drawChart() {
+  const pick = document.getElementById('chart-pick');
+  const chartNote = document.getElementById('chart-note');
+  const sampled = meta.series ? meta.series.series : [];
+  const addChoice = (value, text) => {
+    const option = document.createElement('option');
+    option.value = value;
+    option.textContent = text;
+    pick.appendChild(option);
+  };
+  addChoice('delivery', 'Delivery ratio and delay');
+  sampled.forEach((s, i) => addChoice(String(i), 'Series: ' + s.name));
+  if (!meta.panel && sampled.length) pick.value = '0';
+  pick.onchange = () => render();
+  function chartFrame() {
     const cw = chart.width;
     const ch = chart.height;
     cctx.fillStyle = '#fff';
     cctx.fillRect(0, 0, cw, ch);
     cctx.strokeStyle = '#ccc';
     cctx.strokeRect(0.5, 0.5, cw - 1, ch - 1);
+    cctx.font = '10px sans-serif';
+    return [cw, ch];
+  }
+  function line(values, bx, yOf, c) {
+    cctx.strokeStyle = c;
+    cctx.lineWidth = 1.5;
+    cctx.beginPath();
+    let pen = false;
+    for (let i = 0; i < values.length; i++) {
+      if (values[i] === null) { pen = false; continue; }
+      const y = yOf(values[i]);
+      if (pen) cctx.lineTo(bx(i), y); else cctx.moveTo(bx(i), y);
+      pen = true;
+    }
+    cctx.stroke();
+  }
+  function nowLine(cw, ch) {
+    const x = (t / duration) * (cw - 10) + 5;
+    cctx.strokeStyle = '#000';
+    cctx.lineWidth = 1;
+    cctx.beginPath();
+    cctx.moveTo(x, 0);
+    cctx.lineTo(x, ch);
+    cctx.stroke();
+  }
+  function drawDelivery() {
+    const [cw, ch] = chartFrame();
+    chartNote.textContent = 'Messages sent in each interval: the share that reached a ' +
+        'destination (green, 0–1) and their mean delay (orange, right scale).';
     const panel = meta.panel;
     if (!panel) {
       cctx.fillStyle = '#888';
       cctx.fillText('no packet trace in this run', 10, 20);
       return;
     }
-    const bins = panel.sent.length;
     const bx = (i) => ((i + 0.5) * panel.bin_s / duration) * (cw - 10) + 5;
     const maxDelay = Math.max(1e-9, ...panel.delay_s.filter((d) => d !== null));
-    const series = (values, scale, c) => {
-      cctx.strokeStyle = c;
-      cctx.lineWidth = 1.5;
-      cctx.beginPath();
-      let pen = false;
-      for (let i = 0; i < bins; i++) {
-        if (values[i] === null) { pen = false; continue; }
-        const y = ch - 5 - (values[i] / scale) * (ch - 20);
-        if (pen) cctx.lineTo(bx(i), y); else cctx.moveTo(bx(i), y);
-        pen = true;
-      }
-      cctx.stroke();
-    };
-    series(panel.delivery_ratio, 1, '#2ca02c');
-    series(panel.delay_s, maxDelay, '#ff7f0e');
+    line(panel.delivery_ratio, bx, (v) => ch - 5 - v * (ch - 20), '#2ca02c');
+    line(panel.delay_s, bx, (v) => ch - 5 - (v / maxDelay) * (ch - 20), '#ff7f0e');
     cctx.fillStyle = '#555';
-    cctx.font = '10px sans-serif';
     cctx.fillText('ratio 1', 4, 12);
     cctx.textAlign = 'right';
     cctx.fillText('delay ' + (maxDelay * 1000).toFixed(1) + ' ms', cw - 4, 12);
     cctx.textAlign = 'left';
-    const x = (t / duration) * (cw - 10) + 5;
-    cctx.strokeStyle = '#000';
-    cctx.beginPath();
-    cctx.moveTo(x, 0);
-    cctx.lineTo(x, ch);
-    cctx.stroke();
+    nowLine(cw, ch);
+  }
+  function drawSeries(s) {
+    const [cw, ch] = chartFrame();
+    const bin = meta.series.bin_s;
+    const shown = s.low.filter((v) => v !== null).concat(s.high.filter((v) => v !== null));
+    let lo = Math.min(...shown);
+    let hi = Math.max(...shown);
+    if (hi - lo < 1e-12) { lo -= 0.5; hi += 0.5; }
+    const bx = (i) => ((i + 0.5) * bin / duration) * (cw - 10) + 5;
+    const yOf = (v) => ch - 5 - ((v - lo) / (hi - lo)) * (ch - 20);
+    cctx.fillStyle = 'rgba(31,119,180,0.18)';
+    for (let i = 0; i < s.mean.length; i++) {
+      if (s.mean[i] === null) continue;
+      const w = Math.max(1, (bin / duration) * (cw - 10));
+      cctx.fillRect(bx(i) - w / 2, yOf(s.high[i]), w, Math.max(1, yOf(s.low[i]) - yOf(s.high[i])));
+    }
+    line(s.mean, bx, yOf, '#1f77b4');
+    cctx.fillStyle = '#555';
+    cctx.fillText(String(Number(hi.toPrecision(4))), 4, 12);
+    cctx.fillText(String(Number(lo.toPrecision(4))), 4, ch - 8);
+    const at = Math.min(s.mean.length - 1, Math.floor(t / bin));
+    cctx.textAlign = 'right';
+    cctx.fillText(s.mean[at] === null ? 'no sample now' : 'now ' + Number(s.mean[at].toPrecision(4)),
+                  cw - 4, 12);
+    cctx.textAlign = 'left';
+    nowLine(cw, ch);
+    const more = meta.series.not_shown ? ' ' + meta.series.not_shown + ' more series in ' +
+        'series.csv are not offered here.' : '';
+    chartNote.textContent = 'Series ' + s.name + ' (series.csv): its mean over the robots ' +
+        'that sampled it in each ' + bin.toPrecision(3) + ' s interval (blue), between the ' +
+        'least and greatest value (shaded).' + more;
+  }
+  function drawChart() {
+    if (pick.value === 'delivery') drawDelivery(); else drawSeries(sampled[Number(pick.value)]);
   }
 
   function layout() {
