@@ -7,7 +7,8 @@
 
 Runs every workload with both builds, alternating (before, after, before, ...) so that load on a
 shared machine hits both alike, and reports the median network CPU seconds per simulated second
-(`cpu_s.network` of summary.json), the events run, and after/before. It also checks that both
+(`cpu_s.network` of summary.json), the events run, and after/before; and the same for the robot
+half's CPU (`cpu_s.robot`) and the run's wall time, for changes that touch the robot half. It also checks that both
 builds reported the same packets, delivery ratio, delays, hops, MAC and routing counters: a
 speed-up that changes results is reported as such (compare packet traces with `cmp` for byte
 identity). Writes a JSON file with every run when --out is given.
@@ -66,7 +67,8 @@ def run_once(build, scenario, sets, sim_s, out_dir):
         summary = json.load(f)
     # Everything the run reports about the network, for the same-results check.
     outcome = {key: summary.get(key) for key in RESULT_KEYS}
-    return {"cpu_network_s": summary["cpu_s"]["network"], "events": summary.get("events"),
+    return {"cpu_network_s": summary["cpu_s"]["network"], "cpu_robot_s": summary["cpu_s"]["robot"],
+            "wall_s": summary["wall_s"], "events": summary.get("events"),
             "pdr": summary["pdr"], "mac_tx_frames": summary["mac"]["tx_frames"],
             "outcome": outcome}
 
@@ -100,20 +102,29 @@ def main():
                     runs[label].append(run_once(build, scenario, sets, args.sim_s, out_dir))
                     print(f"{name} {label} {repeat + 1}/{args.repeats}: "
                           f"{runs[label][-1]['cpu_network_s']:.3f} CPU-s", file=sys.stderr)
-            medians = {label: statistics.median(r["cpu_network_s"] for r in runs[label]) / args.sim_s
-                       for label in runs}
+            def median(key, label):
+                return statistics.median(r[key] for r in runs[label]) / args.sim_s
+            medians = {label: median("cpu_network_s", label) for label in runs}
+            robot = {label: median("cpu_robot_s", label) for label in runs}
+            wall = {label: median("wall_s", label) for label in runs}
             same = runs["before"][0]["outcome"] == runs["after"][0]["outcome"]
             results[name] = {"runs": runs, "cpu_per_sim_s": medians,
                              "after_over_before": medians["after"] / medians["before"],
+                             "robot_cpu_per_sim_s": robot,
+                             "robot_after_over_before": robot["after"] / robot["before"],
+                             "wall_per_sim_s": wall,
+                             "wall_after_over_before": wall["after"] / wall["before"],
                              "same_results": same}
 
-    print(f"| workload | before (CPU-s per sim-s) | after | after/before | events before | "
-          f"events after | same results |")
-    print("|---|---|---|---|---|---|---|")
+    print(f"| workload | network before (CPU-s per sim-s) | after | after/before | "
+          f"robot after/before | wall after/before | events before | events after | "
+          f"same results |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for name, result in results.items():
         medians = result["cpu_per_sim_s"]
         print(f"| {name} | {medians['before']:.4f} | {medians['after']:.4f} | "
-              f"{result['after_over_before']:.2f} | {result['runs']['before'][0]['events']} | "
+              f"{result['after_over_before']:.2f} | {result['robot_after_over_before']:.2f} | "
+              f"{result['wall_after_over_before']:.2f} | {result['runs']['before'][0]['events']} | "
               f"{result['runs']['after'][0]['events']} | {'yes' if result['same_results'] else 'NO'} |")
     if args.out:
         with open(args.out, "w", encoding="utf-8") as f:

@@ -285,6 +285,53 @@ TEST_F(RobotContextTest, SendStampsIdsAndRefusesBadMessages) {
   EXPECT_EQ(state_.next_message_id, 2U);
 }
 
+// route_to() answers from the previous batch's answers (sorted by robot, then destination) and
+// notes each destination asked once per step, in asking order, for the next batch.
+TEST_F(RobotContextTest, RouteToAnswersFromTheLastResultAndNotesEachAskOnce) {
+  state_.route_asks.assign(3, {});
+  state_.routes = {
+      RouteAnswer{RouteQuery{1, 0}, Route{RouteStatus::valid, 0, 1, from_seconds(0.1)}},
+      RouteAnswer{RouteQuery{1, 2}, Route{RouteStatus::none, kNoNode, 0, from_seconds(0.1)}},
+      RouteAnswer{RouteQuery{2, 0}, Route{RouteStatus::valid, 1, 2, from_seconds(0.1)}}};
+  WorldRobotContext robot(state_, 1);
+  const Route to_zero = robot.route_to(0);
+  EXPECT_EQ(to_zero.status, RouteStatus::valid);
+  EXPECT_EQ(to_zero.next_hop, 0U);
+  EXPECT_EQ(to_zero.hops, 1U);
+  EXPECT_EQ(to_zero.as_of, from_seconds(0.1));
+  EXPECT_EQ(robot.route_to(2).status, RouteStatus::none);
+  EXPECT_EQ(robot.route_to(0).status, RouteStatus::valid);  // asked again: noted once
+  EXPECT_EQ(state_.route_asks[1], (std::vector<RobotId>{0, 2}));
+  // Robot 0 asked nothing before: pending, and noted.
+  WorldRobotContext first(state_, 0);
+  EXPECT_EQ(first.route_to(2).status, RouteStatus::pending);
+  EXPECT_EQ(state_.route_asks[0], (std::vector<RobotId>{2}));
+  EXPECT_TRUE(state_.route_asks[2].empty());
+}
+
+TEST_F(RobotContextTest, RouteToRefusesItselfNonRobotsAndTooManyDestinations) {
+  state_.route_asks.assign(3, {});
+  WorldRobotContext robot(state_, 1);
+  EXPECT_THROW((void)robot.route_to(1), std::invalid_argument);
+  EXPECT_THROW((void)robot.route_to(3), std::invalid_argument);
+  EXPECT_THROW((void)robot.route_to(kBroadcast), std::invalid_argument);
+  EXPECT_TRUE(state_.route_asks[1].empty());
+
+  RobotWorldState crowd;
+  crowd.bodies.resize(kMaxRouteQueriesPerRobot + 2);
+  crowd.route_asks.assign(crowd.bodies.size(), {});
+  WorldRobotContext asker(crowd, 0);
+  for (RobotId d = 1; d <= kMaxRouteQueriesPerRobot; ++d) (void)asker.route_to(d);
+  EXPECT_NO_THROW((void)asker.route_to(1));  // one already asked is still answered
+  try {
+    (void)asker.route_to(kMaxRouteQueriesPerRobot + 1);
+    FAIL();
+  } catch (const std::length_error& error) {
+    EXPECT_NE(std::string(error.what()).find("kMaxRouteQueriesPerRobot"), std::string::npos);
+  }
+  EXPECT_EQ(crowd.route_asks[0].size(), kMaxRouteQueriesPerRobot);
+}
+
 TEST_F(RobotContextTest, RecordSummarisesPerMetricPooledAndPerRobot) {
   WorldRobotContext a(state_, 0);
   WorldRobotContext b(state_, 1);
