@@ -66,7 +66,7 @@ TEST(NetworkSimulator, ReportHasEveryKeyWithZerosIncluded) {
     EXPECT_EQ(report["packets"]["dropped"][reason], 0) << reason;
   }
   for (const char* key :
-       {"sent", "delivered", "broadcast_sent", "broadcast_deliveries", "in_flight"}) {
+       {"sent", "delivered", "broadcast_sent", "broadcast_deliveries", "undelivered"}) {
     EXPECT_EQ(report["packets"][key], 0) << key;
   }
   for (const char* key : {"tx_frames", "tx_bytes", "collisions", "retries"}) {

@@ -99,7 +99,7 @@ TEST_F(NetworkFlooding, TtlShorterThanTheLineStopsTheFlood) {
     EXPECT_LE(line.node, 3);
   }
   EXPECT_EQ(out.report["packets"]["dropped"]["ttl_expired"], 1);
-  EXPECT_EQ(out.report["packets"]["in_flight"], 1);
+  EXPECT_EQ(out.report["packets"]["undelivered"], 1);
   EXPECT_EQ(out.report["pdr"].get<double>(), 0.0);
 }
 

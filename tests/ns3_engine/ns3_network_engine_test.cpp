@@ -53,7 +53,7 @@ TEST(Ns3NetworkEngine, AMessageToItsOwnSourceIsDeliveredAtOnceWithNoHop) {
   EXPECT_EQ(deliveries[0].port, 7U);
   const NetworkReport report = engine.report();
   EXPECT_EQ(report.delivered, 1U);
-  EXPECT_EQ(report.in_flight, 0U);
+  EXPECT_EQ(report.undelivered, 0U);
 }
 
 // ns-3.37's AODV, EnableBroadcast notwithstanding, does not relay an application's broadcast to

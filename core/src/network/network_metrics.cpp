@@ -101,7 +101,7 @@ void NetworkMetrics::add(CounterMap& counters, std::string_view counter, std::ui
   }
 }
 
-NetworkReport NetworkMetrics::report(std::uint64_t in_flight, std::uint64_t events) const {
+NetworkReport NetworkMetrics::report(std::uint64_t undelivered, std::uint64_t events) const {
   NetworkReport out;
   out.sent = sent_;
   out.delivered = delivered();
@@ -109,7 +109,7 @@ NetworkReport NetworkMetrics::report(std::uint64_t in_flight, std::uint64_t even
     out.dropped.push_back({to_string(reason), drops(reason)});
   out.broadcast_sent = broadcast_sent_;
   out.broadcast_deliveries = broadcast_deliveries_;
-  out.in_flight = in_flight;
+  out.undelivered = undelivered;
   out.duplicates = duplicates_;
 
   const std::uint64_t unicast = unicast_sent();

@@ -6,10 +6,11 @@
 //   packets.dropped.<reason>      packet copies discarded, by DropReason (data and control)
 //   packets.broadcast_sent        broadcast messages among `sent`
 //   packets.broadcast_deliveries  (broadcast message, receiving node) deliveries
-//   packets.in_flight             unicast messages not delivered to their destination so far. The
-//                                 kernel cannot tell a copy still travelling from one a protocol
-//                                 discarded silently (e.g. duplicate suppression), so this is
-//                                 "undelivered", not "provably still in the network".
+//   packets.undelivered           unicast messages sent and not delivered to their destination
+//                                 by the end of the run: dropped, or still queued or travelling.
+//                                 (The kernel cannot tell a copy still travelling from one a
+//                                 protocol discarded silently, e.g. duplicate suppression, so no
+//                                 "in flight" count is offered.)
 //   packets.duplicates            copies of an already delivered message that reached a node's
 //                                 application and were not passed to the robot again
 //   pdr                           delivered / unicast sent (0 when none was sent)
@@ -68,8 +69,8 @@ class NetworkMetrics {
   [[nodiscard]] std::uint64_t delivered() const { return delays_ns_.size(); }
   [[nodiscard]] std::uint64_t drops(DropReason reason) const;
 
-  // The report described above; `in_flight` and `events` come from the simulator.
-  [[nodiscard]] NetworkReport report(std::uint64_t in_flight, std::uint64_t events) const;
+  // The report described above; `undelivered` and `events` come from the simulator.
+  [[nodiscard]] NetworkReport report(std::uint64_t undelivered, std::uint64_t events) const;
 
  private:
   using CounterMap = std::map<std::string, std::uint64_t, std::less<>>;

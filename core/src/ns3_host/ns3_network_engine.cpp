@@ -167,8 +167,8 @@ void Ns3NetworkEngine::forget_before(SimTime horizon) {
 
 NetworkReport Ns3NetworkEngine::report() const {
   const ns3engine::Report counters = network_->report();
-  const std::uint64_t in_flight = metrics_.unicast_sent() - metrics_.delivered();
-  NetworkReport report = metrics_.report(in_flight, counters.events);
+  const std::uint64_t undelivered = metrics_.unicast_sent() - metrics_.delivered();
+  NetworkReport report = metrics_.report(undelivered, counters.events);
   report.mac = named_counts(counters.mac);
   report.routing = named_counts(counters.routing);
   // ns-3's ARP counts go where the native engine's are (summary.json's `arp`), under the names

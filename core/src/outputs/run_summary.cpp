@@ -58,7 +58,7 @@ Json network_report_json(const NetworkReport& report) {
   packets["dropped"] = counts_json(report.dropped);
   packets["broadcast_sent"] = report.broadcast_sent;
   packets["broadcast_deliveries"] = report.broadcast_deliveries;
-  packets["in_flight"] = report.in_flight;
+  packets["undelivered"] = report.undelivered;
   packets["duplicates"] = report.duplicates;
   summary["packets"] = packets;
   summary["pdr"] = report.pdr;

@@ -23,7 +23,7 @@ struct NetworkReport {
   std::vector<NamedCount> dropped;  // one per drop reason, in the summary's order
   std::uint64_t broadcast_sent = 0;
   std::uint64_t broadcast_deliveries = 0;
-  std::uint64_t in_flight = 0;
+  std::uint64_t undelivered = 0;  // unicast messages not delivered (network_metrics.hpp)
   std::uint64_t duplicates = 0;
   double pdr = 0.0;
   // Over the first delivery of each unicast message; absent when none was delivered.

@@ -20,7 +20,7 @@ void report_fields(const NetworkReport& r, Sink& sink) {
   };
   sink.put(RecordType::report).put(r.sent).put(r.delivered);
   counts(r.dropped);
-  sink.put(r.broadcast_sent).put(r.broadcast_deliveries).put(r.in_flight).put(r.duplicates);
+  sink.put(r.broadcast_sent).put(r.broadcast_deliveries).put(r.undelivered).put(r.duplicates);
   sink.put(r.pdr);
   optional(r.delay_mean_s);
   optional(r.delay_p50_s);
@@ -82,7 +82,7 @@ bool decode_optional(RecordReader& reader, std::optional<double>& value) {
 bool decode_report(RecordReader& reader, NetworkReport& r) {
   return reader.get(r.sent) && reader.get(r.delivered) && decode_counts(reader, r.dropped) &&
          reader.get(r.broadcast_sent) && reader.get(r.broadcast_deliveries) &&
-         reader.get(r.in_flight) && reader.get(r.duplicates) && reader.get(r.pdr) &&
+         reader.get(r.undelivered) && reader.get(r.duplicates) && reader.get(r.pdr) &&
          decode_optional(reader, r.delay_mean_s) && decode_optional(reader, r.delay_p50_s) &&
          decode_optional(reader, r.delay_p95_s) && decode_optional(reader, r.hops_mean) &&
          decode_counts(reader, r.mac) && decode_counts(reader, r.routing) &&
