@@ -1,7 +1,7 @@
 // The proximity ring as a physics plugin answers it (Physics::sense_proximity): rays from a
 // robot's centre against the arena's walls, its obstacles, its movable objects and the other
 // robots' discs, cast analytically. Both in-tree physics engines use it, so a ring reads the same
-// on either.
+// on either; the kernel's range-and-bearing device casts its lines of sight with the same rays.
 #pragma once
 
 #include <algorithm>
