@@ -68,6 +68,21 @@ class Scene {
 
 using Ids = std::vector<RobotId>;
 
+// A `width_m` x `height_m` arena whose movable objects are a cylinder and a box of these sizes
+// (their poses are the test's object_poses).
+Arena arena_with_objects(double width_m, double height_m, double cylinder_radius_m, double box_x_m,
+                         double box_y_m) {
+  Arena arena{width_m, height_m, {}};
+  ArenaObject cylinder;
+  cylinder.shape = ArenaObject::Shape::cylinder;
+  cylinder.radius_m = cylinder_radius_m;
+  ArenaObject box;
+  box.size_x_m = box_x_m;
+  box.size_y_m = box_y_m;
+  arena.objects = {cylinder, box};
+  return arena;
+}
+
 TEST(RangeAndBearing, AWallBetweenTheCentresBlocksTheLineAndOnlyThen) {
   const Arena walled{10.0, 10.0, {Rect{4.9, 2.0, 5.1, 8.0}}};
   Scene across({make_body(3.0, 5.0, 0.0), make_body(7.0, 5.0, 0.0)}, device_config(), walled);
@@ -108,14 +123,7 @@ TEST(RangeAndBearing, ARobotBetweenBlocksTheLineButNotItsNeighbours) {
 }
 
 TEST(RangeAndBearing, AMovableObjectBetweenBlocksTheLine) {
-  Arena arena{10.0, 10.0, {}};
-  ArenaObject cylinder;
-  cylinder.shape = ArenaObject::Shape::cylinder;
-  cylinder.radius_m = 0.3;
-  ArenaObject box;
-  box.size_x_m = 1.0;
-  box.size_y_m = 0.2;
-  arena.objects = {cylinder, box};
+  const Arena arena = arena_with_objects(10.0, 10.0, 0.3, 1.0, 0.2);
   Scene scene({make_body(3.0, 5.0, 0.0), make_body(7.0, 5.0, 0.0), make_body(3.0, 2.0, 0.0),
                make_body(5.0, 2.0, 0.0)},
               device_config(5.0), arena);
@@ -372,14 +380,8 @@ std::vector<Ids> seen_by_every_robot_brute_force(const Arena& arena,
 }
 
 TEST(RangeAndBearing, FindsExactlyWhatCheckingEveryPairFinds) {
-  Arena arena{20.0, 20.0, {Rect{5.0, 5.0, 6.0, 12.0}, Rect{12.0, 14.0, 17.0, 14.5}}};
-  ArenaObject cylinder;
-  cylinder.shape = ArenaObject::Shape::cylinder;
-  cylinder.radius_m = 0.4;
-  ArenaObject box;
-  box.size_x_m = 1.5;
-  box.size_y_m = 0.3;
-  arena.objects = {cylinder, box};
+  Arena arena = arena_with_objects(20.0, 20.0, 0.4, 1.5, 0.3);
+  arena.obstacles = {Rect{5.0, 5.0, 6.0, 12.0}, Rect{12.0, 14.0, 17.0, 14.5}};
   const std::vector<ObjectPose> poses = {ObjectPose{Vec2(14.0, 6.0), 0.0},
                                          ObjectPose{Vec2(9.0, 16.0), 0.7}};
   RobotBody prototype = make_body(0.0, 0.0, 0.0);

@@ -241,13 +241,8 @@ TEST(ScenarioLoader, RangeAndBearingKeysReachTheRobotSettings) {
        "robots.range_and_bearing.range_noise_sd_m=0.02",
        "robots.range_and_bearing.bearing_noise_sd_rad=0.05",
        "robots.range_and_bearing.loss_probability=0.25", "robots.range_and_bearing.data_bytes=4"});
-  const RangeAndBearingConfig& rab = s.robot_settings().robots.range_and_bearing;
-  EXPECT_TRUE(rab.enabled);
-  EXPECT_EQ(rab.range_m, 0.8);
-  EXPECT_EQ(rab.range_noise_sd_m, 0.02);
-  EXPECT_EQ(rab.bearing_noise_sd_rad, 0.05);
-  EXPECT_EQ(rab.loss_probability, 0.25);
-  EXPECT_EQ(rab.data_bytes, 4u);
+  const RangeAndBearingConfig expected{true, 0.8, 0.02, 0.05, 0.25, 4};
+  EXPECT_TRUE(s.robot_settings().robots.range_and_bearing == expected);
 }
 
 TEST(ScenarioLoader, SetCreatesMissingKeysAndReplacesWholeValues) {

@@ -27,6 +27,8 @@ struct RangeAndBearingConfig {
   double bearing_noise_sd_rad = 0.0;
   double loss_probability = 0.0;
   std::uint32_t data_bytes = 10;  // a foot-bot's
+
+  bool operator==(const RangeAndBearingConfig&) const = default;
 };
 
 struct RobotsConfig {
