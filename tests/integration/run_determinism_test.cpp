@@ -205,6 +205,49 @@ TEST(RunDeterminism, EveryTransportGivesIdenticalRouteAnswers) {
               read_file(dir.path() / "quiet" / "packets.csv"));
 }
 
+// The range-and-bearing device belongs to the robot half: a controller using it (the rab_probe
+// fixture, beside the quickstart's two) gives the same bytes twice with noise and loss on,
+// reads in every step the data each robot set in the previous one, and changes nothing the
+// network half does (the same packets, motion and traffic as a run without it). Without the key
+// the run stops, saying which key to set.
+TEST(RunDeterminism, RangeAndBearingRunsAreIdenticalAndLeaveTheNetworkAlone) {
+  TempDir plugins;
+  copy_fixture(plugins, "rab_probe");
+  const std::string controllers =
+      " --set plugin_paths=[" + plugins.path().string() +
+      "] --set 'robots.controllers=[{plugin: diffusion, params: {speed_mps: 1.0}},"
+      " {plugin: cbr, params: {fraction: 0.2, rate_hz: 5, payload_bytes: 512}},"
+      " {plugin: rab_probe}]'";
+  const std::string probe = controllers +
+                            " --set robots.range_and_bearing.enabled=true"
+                            " --set robots.range_and_bearing.range_m=60"
+                            " --set robots.range_and_bearing.range_noise_sd_m=0.5"
+                            " --set robots.range_and_bearing.bearing_noise_sd_rad=0.05"
+                            " --set robots.range_and_bearing.loss_probability=0.1 --seed 3";
+  expect_identical_runs({probe, probe});
+
+  TempDir dir;
+  run_into(dir.path() / "rab", probe);
+  const auto summary = nlohmann::json::parse(read_file(dir.path() / "rab" / "summary.json"));
+  const auto& controllers_seen = summary["controllers"];
+  EXPECT_GT(controllers_seen["rab_readings"]["sum"].get<double>(), 0.0) << controllers_seen.dump();
+  for (const char* check : {"rab_stale", "rab_wrong_sender", "rab_unpadded"}) {
+    EXPECT_GT(controllers_seen[check]["count"].get<double>(), 0.0) << check;
+    EXPECT_EQ(controllers_seen[check]["sum"].get<double>(), 0.0) << check;
+  }
+  run_into(dir.path() / "plain", " --seed 3");
+  for (const char* file : {"packets.csv", "mobility.ns2", "traffic.csv"}) {
+    EXPECT_TRUE(read_file(dir.path() / "rab" / file) == read_file(dir.path() / "plain" / file))
+        << file;
+  }
+
+  const auto refused = run_swarmnet("run " + kScenario + kSmall + controllers + " --quiet --out " +
+                                    (dir.path() / "refused").string());
+  EXPECT_EQ(refused.exit_code, 1) << refused.output;
+  EXPECT_NE(refused.output.find("set robots.range_and_bearing.enabled: true"), std::string::npos)
+      << refused.output;
+}
+
 TEST(RunDeterminism, AnotherSeedGivesDifferentTraces) {
   TempDir a;
   TempDir b;

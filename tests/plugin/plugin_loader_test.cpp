@@ -85,6 +85,10 @@ class RecordingRobot final : public RobotContext {
   [[nodiscard]] std::span<const double> reading(std::string_view /*name*/) const override {
     return {};
   }
+  [[nodiscard]] std::span<const RangeAndBearingReading> range_and_bearing() const override {
+    return {};
+  }
+  void set_range_and_bearing_data(std::span<const std::byte> /*data*/) override {}
   void set_wheel_speeds(double /*left_mps*/, double /*right_mps*/) override {}
   std::uint64_t send(RobotId /*destination*/, std::span<const std::byte> /*payload*/,
                      const SendOptions& /*options*/) override {
@@ -295,8 +299,9 @@ TEST(PluginLoader, DiscoverListsPluginsByKindThenNameAndReportsBrokenFiles) {
             (std::vector<std::string>{
                 "physics kinematic2d", "propagation test_propagation", "mac ideal_mac",
                 "routing busy_routing", "routing test_routing", "controller busy_controller",
-                "controller neighbor_probe", "controller report_probe", "controller route_probe",
-                "controller test_controller", "controller world_probe", "world test_world"}));
+                "controller neighbor_probe", "controller rab_probe", "controller report_probe",
+                "controller route_probe", "controller test_controller", "controller world_probe",
+                "world test_world"}));
 
   std::vector<std::string> broken_files;
   for (const auto& file : broken) {

@@ -67,6 +67,28 @@ TEST(RobotAllocationTest, DenseDiffusingSwarmStepsWithoutAllocating) {
             0U);
 }
 
+// The range-and-bearing device reuses its readings and scratch space: once they have grown, a
+// swarm in which the same robots see each other senses without allocating (noise on; no loss,
+// so that the count of readings stays the same).
+TEST(RobotAllocationTest, RangeAndBearingSensesWithoutAllocating) {
+  PluginLoader loader;
+  RobotSettings settings = make_settings(loader, 400, 12.0, 12.0);
+  settings.arena.obstacles.push_back(Rect{5.0, 5.0, 7.0, 6.0});
+  settings.robots.range_and_bearing.enabled = true;
+  settings.robots.range_and_bearing.range_noise_sd_m = 0.01;
+  settings.robots.range_and_bearing.bearing_noise_sd_rad = 0.01;
+  RobotWorld world(settings, loader);
+  std::vector<AppMessage> sent;
+  world.step({}, sent);
+  std::size_t readings = 0;
+  for (RobotId r = 0; r < 400; ++r) readings += world.range_and_bearing(r).size();
+  EXPECT_GT(readings, 400U);
+  EXPECT_EQ(allocations_during([&] {
+              for (int i = 0; i < 50; ++i) world.step({}, sent);
+            }),
+            0U);
+}
+
 // Deliveries are copied into reused inbox slots: once the slots and their payload buffers have
 // grown, repeating the same traffic allocates nothing.
 TEST(RobotAllocationTest, InboxesReuseTheirSlots) {

@@ -83,6 +83,15 @@ const std::vector<BadCase> kBadCases = {
   {"too_many_robots.yaml", {}, "8:10", "robots.count", "1000 robots of radius 0.085 m cover 22.7 m^2, more than half of the 6 m^2 free area of the placement region; expected at most 132 robots"},
   {"robots_in_obstacles.yaml", {}, "10:10", "robots.count", "40 robots of radius 0.085 m cover 0.9079 m^2, more than half of the 1 m^2 free area"},
   {"robot_larger_than_region.yaml", {}, "9:13", "robots.radius_m", "a robot of radius 3 m does not fit in the placement region [0, 5] x [0, 50]"},
+  // The range-and-bearing device's keys.
+  {"minimal.yaml", {"robots.range_and_bearing.range_m=0"}, "--set robots.range_and_bearing.range_m", "robots.range_and_bearing.range_m", "0 is out of range; expected real > 0 (m)"},
+  {"minimal.yaml", {"robots.range_and_bearing.range_noise_sd_m=-0.1"}, "--set robots.range_and_bearing.range_noise_sd_m", "robots.range_and_bearing.range_noise_sd_m", "-0.1 is out of range; expected real >= 0 (m)"},
+  {"minimal.yaml", {"robots.range_and_bearing.bearing_noise_sd_rad=-1"}, "--set robots.range_and_bearing.bearing_noise_sd_rad", "robots.range_and_bearing.bearing_noise_sd_rad", "-1 is out of range; expected real >= 0 (rad)"},
+  {"minimal.yaml", {"robots.range_and_bearing.loss_probability=1.5"}, "--set robots.range_and_bearing.loss_probability", "robots.range_and_bearing.loss_probability", "1.5 is out of range; expected real 0..1"},
+  {"minimal.yaml", {"robots.range_and_bearing.loss_probability=-0.5"}, "--set robots.range_and_bearing.loss_probability", "robots.range_and_bearing.loss_probability", "-0.5 is out of range; expected real 0..1"},
+  {"minimal.yaml", {"robots.range_and_bearing.data_bytes=257"}, "--set robots.range_and_bearing.data_bytes", "robots.range_and_bearing.data_bytes", "257 is out of range; expected integer 0..256"},
+  {"minimal.yaml", {"robots.range_and_bearing.enabled=maybe"}, "--set robots.range_and_bearing.enabled", "robots.range_and_bearing.enabled", "'maybe' is not a boolean; expected true or false"},
+  {"minimal.yaml", {"robots.range_and_bearing.rnage_m=2"}, "--set robots.range_and_bearing.rnage_m", "robots.range_and_bearing.rnage_m", "unknown key (did you mean 'range_m'?)"},
   // Overrides.
   {"minimal.yaml", {"robots.controllers.3.plugin=x"}, "--set robots.controllers.3.plugin", "robots.controllers.3", "index 3 is out of range: the list has 1 element; expected an index 0..0"},
   {"minimal.yaml", {"robots.count.x=1"}, "--set robots.count.x", "robots.count", "is a scalar (10), so it has no key or index 'x'"},

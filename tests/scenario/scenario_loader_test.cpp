@@ -118,6 +118,14 @@ TEST(ScenarioLoader, OptionalKeysTakeTheirDocumentedDefaults) {
   EXPECT_TRUE(same_rect(s.robots.placement, Rect{0, 0, 100, 50})) << "the whole arena";
   EXPECT_EQ(s.robots.proximity.rays, 24u);
   EXPECT_EQ(s.robots.proximity.range_m, 0.3);
+  const RangeAndBearingConfig& rab = s.robots.range_and_bearing;
+  EXPECT_FALSE(rab.enabled);
+  EXPECT_EQ(rab.range_m, 3.0);
+  EXPECT_EQ(rab.range_noise_sd_m, 0.0);
+  EXPECT_EQ(rab.bearing_noise_sd_rad, 0.0);
+  EXPECT_EQ(rab.loss_probability, 0.0);
+  EXPECT_EQ(rab.data_bytes, 10u);
+  EXPECT_FALSE(s.robot_settings().robots.range_and_bearing.enabled);
   ASSERT_EQ(s.robots.controllers.size(), 1u);
   EXPECT_EQ(s.robots.controllers[0].params.values().size(), 6u);
   EXPECT_EQ(s.robots.controllers[0].params.text("mode"), "random");
@@ -224,6 +232,17 @@ TEST(ScenarioLoader, SetOverridesNestedValuesAndListElements) {
   // An overridden plugin is located at its override.
   const Scenario t = load_with(kMinimal, {"network.routing.plugin=test_routing"});
   EXPECT_EQ(t.network.routing.where.text, "--set network.routing.plugin");
+}
+
+TEST(ScenarioLoader, RangeAndBearingKeysReachTheRobotSettings) {
+  const Scenario s = load_with(
+      kMinimal,
+      {"robots.range_and_bearing.enabled=true", "robots.range_and_bearing.range_m=0.8",
+       "robots.range_and_bearing.range_noise_sd_m=0.02",
+       "robots.range_and_bearing.bearing_noise_sd_rad=0.05",
+       "robots.range_and_bearing.loss_probability=0.25", "robots.range_and_bearing.data_bytes=4"});
+  const RangeAndBearingConfig expected{true, 0.8, 0.02, 0.05, 0.25, 4};
+  EXPECT_TRUE(s.robot_settings().robots.range_and_bearing == expected);
 }
 
 TEST(ScenarioLoader, SetCreatesMissingKeysAndReplacesWholeValues) {

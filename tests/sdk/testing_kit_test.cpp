@@ -1,6 +1,10 @@
 // The SDK test kit itself: the scheduler's order, the fakes' records, plugin_args' checks.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -141,6 +145,51 @@ TEST(FakeRobotContext, SendOptionsAreRecordedAndReportsFaked) {
   ASSERT_EQ(robot.sent.size(), 3U);
   EXPECT_EQ(robot.sent[2].destination, kBroadcast);
   EXPECT_EQ(robot.sent[2].options.hop_limit, 1U);
+}
+
+// The example of docs/plugins.md, "Range and bearing": head for the mean bearing of the robots
+// in sight, and tell them how many of them this robot sees.
+void flock_step(RobotContext& robot) {
+  const auto seen = robot.range_and_bearing();
+  double x = 0.0;
+  double y = 0.0;
+  for (const RangeAndBearingReading& r : seen) {
+    x += std::cos(r.bearing_rad);
+    y += std::sin(r.bearing_rad);
+    robot.record("neighbour_count_heard", std::to_integer<int>(r.data[0]));
+  }
+  const double turn = seen.empty() ? 0.0 : std::atan2(y, x);  // relative to the heading
+  const double w = std::clamp(0.5 * turn, -2.0, 2.0) / robot.step_s();
+  const double v = 0.1;
+  robot.set_wheel_speeds(v - w * robot.axle_m() / 2.0, v + w * robot.axle_m() / 2.0);
+  const std::array<std::byte, 1> count{std::byte(std::min<std::size_t>(seen.size(), 255))};
+  robot.set_range_and_bearing_data(count);  // the others read it next step, zero-padded
+}
+
+TEST(FakeRobotContext, RangeAndBearingReadingsAreFakedAndTheDataRecorded) {
+  FakeRobotContext robot;
+  robot.max_speed = 10.0;
+  const std::array<std::byte, 1> three{std::byte{3}};
+  robot.see_by_range_and_bearing(7, 1.0, 0.2, three);
+  robot.see_by_range_and_bearing(2, 2.0, 0.4);
+  ASSERT_EQ(robot.range_and_bearing().size(), 2U);
+  EXPECT_EQ(robot.range_and_bearing()[0].robot, 2U);  // in id order, as the kernel gives them
+  EXPECT_EQ(robot.range_and_bearing()[1].data.size(), 10U);
+  EXPECT_EQ(robot.range_and_bearing()[1].data[0], std::byte{3});
+  EXPECT_EQ(robot.range_and_bearing()[1].data[9], std::byte{0});
+
+  flock_step(robot);
+  EXPECT_GT(robot.right_mps, robot.left_mps) << "turns left, towards bearings 0.2 and 0.4";
+  EXPECT_EQ(robot.recorded.at("neighbour_count_heard"), (std::vector<double>{0.0, 3.0}));
+  ASSERT_EQ(robot.range_and_bearing_data.size(), 1U);
+  EXPECT_EQ(robot.range_and_bearing_data[0].data.size(), 10U);
+  EXPECT_EQ(robot.range_and_bearing_data[0].data[0], std::byte{2});
+
+  const std::vector<std::byte> too_long(11);
+  EXPECT_THROW(robot.set_range_and_bearing_data(too_long), std::invalid_argument);
+  robot.range_and_bearing_enabled = false;
+  EXPECT_THROW((void)robot.range_and_bearing(), std::logic_error);
+  EXPECT_THROW(robot.set_range_and_bearing_data(three), std::logic_error);
 }
 
 // A stand-in plugin class with a parameter table, for plugin_args.

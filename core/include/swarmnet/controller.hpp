@@ -19,6 +19,7 @@
 #include "swarmnet/ids.hpp"
 #include "swarmnet/plugin.hpp"
 #include "swarmnet/radio_neighbor.hpp"
+#include "swarmnet/range_and_bearing.hpp"
 #include "swarmnet/route.hpp"
 #include "swarmnet/send_report.hpp"
 #include "swarmnet/units.hpp"
@@ -82,6 +83,17 @@ class RobotContext {
   // (copy what you keep). Throws
   // std::invalid_argument for a name no world of the scenario offers.
   [[nodiscard]] virtual std::span<const double> reading(std::string_view name) const = 0;
+  // The range-and-bearing receiver (swarmnet/range_and_bearing.hpp), a line-of-sight device of
+  // the robot half, not the radio: one reading for each robot whose emitter it saw at the start
+  // of this step, with the bodies where the previous step's physics left them: a robot within
+  // robots.range_and_bearing.range_m, centre to centre, with no obstacle, movable object or
+  // other robot's disc across the line between the two centres, and whose reading was not lost
+  // (loss_probability). A robot a world switched off neither emits nor receives, but its body
+  // still blocks. Ascending by robot id; each reading carries the data that robot had set by its
+  // previous step (data set in step k is read by the others in step k+1; data set in init() is
+  // read in the first step). Valid until this step ends. Throws std::logic_error unless the
+  // scenario sets robots.range_and_bearing.enabled: true.
+  [[nodiscard]] virtual std::span<const RangeAndBearingReading> range_and_bearing() const = 0;
 
   // Actuators. Wheel speeds are clamped to +/- max_speed_mps().
   virtual void set_wheel_speeds(double left_mps, double right_mps) = 0;
@@ -95,6 +107,13 @@ class RobotContext {
   std::uint64_t send(RobotId destination, std::span<const std::byte> payload) {
     return send(destination, payload, SendOptions{});
   }
+
+  // What this robot's range-and-bearing emitter carries from now on, until set again (zeros
+  // before the first call): the others read it from the next step on. At most
+  // robots.range_and_bearing.data_bytes bytes (std::invalid_argument beyond, naming both sizes);
+  // shorter data is zero-padded to exactly that size. Throws std::logic_error unless the
+  // scenario enables the device.
+  virtual void set_range_and_bearing_data(std::span<const std::byte> data) = 0;
 
   // Asks the world plugin that offers request `name` for it (swarmnet/world.hpp). Throws
   // std::invalid_argument for a name no world offers, or arguments the world refuses.

@@ -32,8 +32,10 @@ namespace swarmnet {
 // 6: Packet::protocol (ARP), RoutingContext::link_address_known. 7: RobotContext::neighbors.
 // 8: send options and reports (RobotContext::send's options, send_reports; Packet::hop_limit;
 // MacContext::acknowledged; Mac::acknowledges_unicasts). 9: RobotContext::route_to and
-// Routing::route_to; RadioNeighbor's unicast exchanges; MacContext::gave_up.
-inline constexpr std::uint32_t kAbiVersion = 10;
+// Routing::route_to; RadioNeighbor's unicast exchanges; MacContext::gave_up. 10:
+// RobotContext::sample, WorldContext::sample. 11: RobotContext::range_and_bearing and
+// set_range_and_bearing_data.
+inline constexpr std::uint32_t kAbiVersion = 11;
 
 enum class PluginKind : std::uint8_t { physics, propagation, mac, routing, controller, world };
 

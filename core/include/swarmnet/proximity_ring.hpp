@@ -1,7 +1,7 @@
 // The proximity ring as a physics plugin answers it (Physics::sense_proximity): rays from a
 // robot's centre against the arena's walls, its obstacles, its movable objects and the other
 // robots' discs, cast analytically. Both in-tree physics engines use it, so a ring reads the same
-// on either.
+// on either; the kernel's range-and-bearing device casts its lines of sight with the same rays.
 #pragma once
 
 #include <algorithm>
@@ -82,6 +82,20 @@ inline double ray_to_object(const ArenaObject& shape, const ObjectPose& pose, co
   return ray_to_rect(box, local_origin, local_u);
 }
 
+// From `point` to the nearest point of `rect` (0 inside it).
+inline double distance_to_rect(const Rect& rect, const Vec2& point) {
+  const Vec2 nearest(std::clamp(point.x(), rect.x_min_m, rect.x_max_m),
+                     std::clamp(point.y(), rect.y_min_m, rect.y_max_m));
+  return (point - nearest).norm();
+}
+
+// The radius of the disc around a movable object's centre that holds it, whatever its heading.
+inline double object_reach_m(const ArenaObject& shape) {
+  return shape.shape == ArenaObject::Shape::box
+             ? std::hypot(0.5 * shape.size_x_m, 0.5 * shape.size_y_m)
+             : shape.radius_m;
+}
+
 class ProximityRing {
  public:
   // Fills `rays` for robot `robot`: ray k leaves the centre at heading + 2*pi*k/rays.size() and
@@ -105,20 +119,14 @@ class ProximityRing {
       rays[k] = std::min(ray_to_walls(arena, origin, directions_[k]), reach_m);
     }
     for (const Rect& obstacle : arena.obstacles) {
-      const Vec2 nearest(std::clamp(origin.x(), obstacle.x_min_m, obstacle.x_max_m),
-                         std::clamp(origin.y(), obstacle.y_min_m, obstacle.y_max_m));
-      if ((origin - nearest).norm() > reach_m) continue;
+      if (distance_to_rect(obstacle, origin) > reach_m) continue;
       for (std::size_t k = 0; k < rays.size(); ++k) {
         rays[k] = std::min(rays[k], ray_to_rect(obstacle, origin, directions_[k]));
       }
     }
     for (std::size_t o = 0; o < object_poses.size() && o < arena.objects.size(); ++o) {
       const ArenaObject& shape = arena.objects[o];
-      // The radius of the disc around the centre that holds the object, whatever its heading.
-      const double object_reach_m = shape.shape == ArenaObject::Shape::box
-                                        ? std::hypot(0.5 * shape.size_x_m, 0.5 * shape.size_y_m)
-                                        : shape.radius_m;
-      if ((object_poses[o].position - origin).norm() > reach_m + object_reach_m) continue;
+      if ((object_poses[o].position - origin).norm() > reach_m + object_reach_m(shape)) continue;
       for (std::size_t k = 0; k < rays.size(); ++k) {
         rays[k] = std::min(rays[k], ray_to_object(shape, object_poses[o], origin, directions_[k]));
       }

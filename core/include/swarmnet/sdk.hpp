@@ -14,6 +14,7 @@
 #include "swarmnet/propagation.hpp"
 #include "swarmnet/proximity_ring.hpp"
 #include "swarmnet/random.hpp"
+#include "swarmnet/range_and_bearing.hpp"
 #include "swarmnet/robot_body.hpp"
 #include "swarmnet/routing.hpp"
 #include "swarmnet/spatial_grid.hpp"

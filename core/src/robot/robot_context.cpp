@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "robot/range_and_bearing_device.hpp"
 #include "robot/world_plugins.hpp"
 
 namespace swarmnet {
@@ -26,6 +27,23 @@ std::span<const RadioNeighbor> WorldRobotContext::neighbors() const {
   }
   const std::size_t first = state_->neighbor_first[id_];
   return {state_->neighbors.data() + first, state_->neighbor_first[id_ + 1] - first};
+}
+
+RangeAndBearingDevice& WorldRobotContext::range_and_bearing_device(const char* call) const {
+  if (state_->range_and_bearing == nullptr) {
+    throw std::logic_error("robot " + std::to_string(id_) + ": " + call +
+                           ": the scenario has no range-and-bearing device (set "
+                           "robots.range_and_bearing.enabled: true; docs/plugins.md)");
+  }
+  return *state_->range_and_bearing;
+}
+
+std::span<const RangeAndBearingReading> WorldRobotContext::range_and_bearing() const {
+  return range_and_bearing_device("range_and_bearing()").readings(id_);
+}
+
+void WorldRobotContext::set_range_and_bearing_data(std::span<const std::byte> data) {
+  range_and_bearing_device("set_range_and_bearing_data()").set_data(id_, data);
 }
 
 std::span<const double> WorldRobotContext::proximity() const {

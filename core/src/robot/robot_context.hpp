@@ -16,6 +16,7 @@
 
 namespace swarmnet {
 
+class RangeAndBearingDevice;
 class WorldPlugins;
 
 // Messages delivered to one port of one robot in the current step. Slots are reused from step to
@@ -51,6 +52,9 @@ struct RobotWorldState {
   // switch-off asked for during a step is pending (2) until the next step begins.
   std::vector<std::uint8_t> switched_off;
   WorldPlugins* worlds = nullptr;  // answers readings and requests; owned by RobotWorld
+  // robots.range_and_bearing: every robot's device; null when the scenario has none. Owned by
+  // RobotWorld.
+  RangeAndBearingDevice* range_and_bearing = nullptr;
   // network.neighbors: robot r's radio neighbour table is
   // neighbors[neighbor_first[r], neighbor_first[r + 1]); filled from the step's network result.
   bool neighbors_enabled = false;
@@ -93,6 +97,9 @@ class WorldRobotContext final : public RobotContext {
   [[nodiscard]] std::span<const SendReport> send_reports() const override;
   [[nodiscard]] Route route_to(RobotId destination) override;
   [[nodiscard]] std::span<const double> reading(std::string_view name) const override;
+  // Both throw std::logic_error when the scenario has no range-and-bearing device.
+  [[nodiscard]] std::span<const RangeAndBearingReading> range_and_bearing() const override;
+  void set_range_and_bearing_data(std::span<const std::byte> data) override;
 
   // Clamps each speed to +/- max_speed_mps; a NaN speed counts as 0 (stopping is the safe
   // reading of a broken command, and a NaN would poison the physics).
@@ -109,6 +116,8 @@ class WorldRobotContext final : public RobotContext {
 
  private:
   [[nodiscard]] const RobotBody& body() const { return state_->bodies[id_]; }
+  // The device, or std::logic_error naming `call` when the scenario has none.
+  [[nodiscard]] RangeAndBearingDevice& range_and_bearing_device(const char* call) const;
 
   RobotWorldState* state_;
   RobotId id_;

@@ -19,6 +19,18 @@ struct ProximityConfig {
   double range_m = 0.3;
 };
 
+// robots.range_and_bearing (swarmnet/range_and_bearing.hpp); defaults as the scenario's.
+struct RangeAndBearingConfig {
+  bool enabled = false;
+  double range_m = 3.0;  // a foot-bot's
+  double range_noise_sd_m = 0.0;
+  double bearing_noise_sd_rad = 0.0;
+  double loss_probability = 0.0;
+  std::uint32_t data_bytes = 10;  // a foot-bot's
+
+  bool operator==(const RangeAndBearingConfig&) const = default;
+};
+
 struct RobotsConfig {
   std::uint32_t count = 0;
   double radius_m = 0.085;
@@ -26,6 +38,7 @@ struct RobotsConfig {
   double max_speed_mps = 1.0;
   Rect placement;  // region robots start in (defaults to the whole arena)
   ProximityConfig proximity;
+  RangeAndBearingConfig range_and_bearing;
   std::vector<PluginChoice> controllers;  // run in this order on every step
   // controllers[c]'s port (swarmnet/controller.hpp); an entry without one here has port c.
   std::vector<std::uint16_t> controller_ports;

@@ -62,6 +62,10 @@ RobotWorld::RobotWorld(const RobotSettings& settings, PluginLoader& loader) {
   state_.route_asks.assign(count, {});
   state_.metrics = RobotMetrics(count);
   state_.series = MetricSeries(settings.open_series);
+  if (robots.range_and_bearing.enabled) {
+    range_and_bearing_.emplace(robots.range_and_bearing, count, settings.seed);
+    state_.range_and_bearing = &*range_and_bearing_;
+  }
 
   PluginArgs physics_args;
   physics_args.params = settings.physics.params;
@@ -107,6 +111,11 @@ std::span<const double> RobotWorld::proximity(RobotId robot) const {
           state_.rays_per_robot};
 }
 
+std::span<const RangeAndBearingReading> RobotWorld::range_and_bearing(RobotId robot) const {
+  if (!range_and_bearing_) return {};
+  return range_and_bearing_->readings(robot);
+}
+
 std::size_t RobotWorld::port_index(std::uint16_t port) const {
   return static_cast<std::size_t>(std::lower_bound(state_.ports.begin(), state_.ports.end(), port) -
                                   state_.ports.begin());
@@ -146,6 +155,12 @@ void RobotWorld::sense() {
     physics_->sense_proximity(state_.bodies, r, state_.proximity_range_m,
                               std::span<double>(state_.proximity.data() + r * rays, rays));
   }
+}
+
+void RobotWorld::sense_range_and_bearing() {
+  if (!range_and_bearing_) return;
+  range_and_bearing_->sense(state_.arena, state_.bodies, physics_->object_poses(),
+                            state_.switched_off, step_index_);
 }
 
 void RobotWorld::set_neighbor_tables(std::span<const std::uint32_t> counts,
@@ -211,6 +226,7 @@ void RobotWorld::step(std::span<const Delivery> deliveries, std::vector<AppMessa
   // Switch-offs asked for during the previous step take effect now (swarmnet/world.hpp).
   std::replace(state_.switched_off.begin(), state_.switched_off.end(), kSwitchOffPending,
                std::uint8_t{1});
+  sense_range_and_bearing();
   worlds_->pre_step();
   {
     const OutboxScope outbox(state_, sent);

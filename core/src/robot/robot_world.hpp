@@ -12,6 +12,7 @@
 #include "plugin/plugin_loader.hpp"
 #include "protocol/step_data.hpp"
 #include "robot/controller_metrics.hpp"
+#include "robot/range_and_bearing_device.hpp"
 #include "robot/robot_context.hpp"
 #include "robot/robot_settings.hpp"
 #include "robot/world_plugins.hpp"
@@ -32,7 +33,9 @@ class RobotWorld {
   // Streams: placement derive_seed(seed, {hash_name("placement")}); physics seed and shared seed
   // derive_seed(seed, {hash_name("physics")}); world w derive_seed(seed, {hash_name("world"), w});
   // controller entry c on robot r derive_seed(seed, {hash_name("controller"), c, r}), shared
-  // derive_seed(seed, {.., c}).
+  // derive_seed(seed, {.., c}); the range-and-bearing reading of robot e by robot r in step k
+  // derive_seed(seed, {hash_name("range_and_bearing"), r, e, k}).
+
   RobotWorld(const RobotSettings& settings, PluginLoader& loader);
 
   RobotWorld(const RobotWorld&) = delete;
@@ -56,13 +59,18 @@ class RobotWorld {
   }
   // The proximity readings robot `robot`'s controllers see on the next step.
   [[nodiscard]] std::span<const double> proximity(RobotId robot) const;
+  // The range-and-bearing readings robot `robot`'s controllers saw in the last step; empty
+  // before the first step and without robots.range_and_bearing.
+  [[nodiscard]] std::span<const RangeAndBearingReading> range_and_bearing(RobotId robot) const;
 
   // Runs one step at now(): puts `deliveries` into the receivers' inboxes (keeping their order;
-  // a receiver that is not a robot is ignored), runs the worlds' pre_step(), every robot's
-  // controllers (robots in ascending id, controllers in scenario order; a switched-off robot's
-  // are skipped), steps the physics by step_s(), senses the proximity rings for the next step,
-  // advances time and runs the worlds' post_step(). Appends the messages sent during the step to
-  // `sent`, ids ascending from a world-wide counter starting at 0.
+  // a receiver that is not a robot is ignored), senses the range-and-bearing devices when the
+  // scenario has them (bodies where the previous step left them, the data set up to the previous
+  // step or in init(), the switch-offs that take effect now), runs the worlds' pre_step(), every
+  // robot's controllers (robots in ascending id, controllers in scenario order; a switched-off
+  // robot's are skipped), steps the physics by step_s(), senses the proximity rings for the next
+  // step, advances time and runs the worlds' post_step(). Appends the messages sent during the
+  // step to `sent`, ids ascending from a world-wide counter starting at 0.
   void step(std::span<const Delivery> deliveries, std::vector<AppMessage>& sent);
 
   // The radio neighbour tables the next step's controllers see (StepResult's layout: `counts[r]`
@@ -105,12 +113,15 @@ class RobotWorld {
   // Makes controller entry `entry` the one the contexts speak for (its port and inbox).
   void enter(std::size_t entry);
   void sense();
+  // This step's range-and-bearing readings, when the scenario has the device.
+  void sense_range_and_bearing();
 
   RobotWorldState state_;
   SimTime step_length_{};
   std::uint64_t step_index_ = 0;
   PluginInstance<Physics> physics_;
   std::optional<WorldPlugins> worlds_;
+  std::optional<RangeAndBearingDevice> range_and_bearing_;
   std::size_t controllers_per_robot_ = 0;
   std::vector<PluginInstance<Controller>> controllers_;  // robot r's entry c at r * per_robot + c
   std::vector<std::uint16_t> entry_ports_;               // controller entry c's port

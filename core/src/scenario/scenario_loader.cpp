@@ -122,6 +122,13 @@ Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>
   s.robots.placement = rect_from(robots["placement"]["region"]);
   s.robots.proximity.rays = robots["proximity"]["rays"].as<std::uint32_t>();
   s.robots.proximity.range_m = robots["proximity"]["range_m"].as<double>();
+  const YAML::Node rab = robots["range_and_bearing"];
+  s.robots.range_and_bearing.enabled = rab["enabled"].as<bool>();
+  s.robots.range_and_bearing.range_m = rab["range_m"].as<double>();
+  s.robots.range_and_bearing.range_noise_sd_m = rab["range_noise_sd_m"].as<double>();
+  s.robots.range_and_bearing.bearing_noise_sd_rad = rab["bearing_noise_sd_rad"].as<double>();
+  s.robots.range_and_bearing.loss_probability = rab["loss_probability"].as<double>();
+  s.robots.range_and_bearing.data_bytes = rab["data_bytes"].as<std::uint32_t>();
   s.robots.controllers = plugin_list("robots.controllers", robots["controllers"].size());
   for (const auto& entry : robots["controllers"]) {
     s.robots.controller_ports.push_back(entry["port"].as<std::uint16_t>());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "swarmnet/range_and_bearing.hpp"
 #include "text/text_join.hpp"
 
 namespace swarmnet {
@@ -173,6 +174,23 @@ const KeySpec& scenario_schema() {
             .between(0, 360).defaults("24"),
         real_key("range_m", "m", "Distance beyond which a ray sees nothing.")
             .above(0).defaults("0.3"),
+      }),
+      map_key("range_and_bearing", "The range-and-bearing device (RobotContext::"
+                                   "range_and_bearing(), docs/plugins.md): each robot reads the "
+                                   "id, range, bearing and data bytes of the robots in its line "
+                                   "of sight. In the robot half; not the radio.", {
+        boolean_key("enabled", "Give every robot the device (off: no cost, and "
+                               "range_and_bearing() refuses).").defaults("false"),
+        real_key("range_m", "m", "Centre-to-centre distance up to which a robot is seen (the "
+                                 "foot-bot's 3 m).").above(0).defaults("3"),
+        real_key("range_noise_sd_m", "m", "Standard deviation of the Gaussian noise added to "
+                                          "each range (clamped at 0).").at_least(0).defaults("0"),
+        real_key("bearing_noise_sd_rad", "rad", "Standard deviation of the Gaussian noise added "
+                                                "to each bearing.").at_least(0).defaults("0"),
+        real_key("loss_probability", "", "Probability that a reading is lost, independently "
+                                         "for each reading.").between(0, 1).defaults("0"),
+        integer_key("data_bytes", "Bytes each emitter carries (the foot-bot's 10).")
+            .between(0, kMaxRangeAndBearingDataBytes).defaults("10"),
       }),
       plugin_list_key("controllers", PluginKind::controller,
                       "Controllers every robot runs, in this order, on every step.")

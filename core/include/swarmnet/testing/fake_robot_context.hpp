@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <numbers>
 #include <set>
@@ -33,6 +34,10 @@ class FakeRobotContext final : public RobotContext {
     std::vector<double> args;
     SimTime at;
   };
+  struct RangeAndBearingData {
+    std::vector<std::byte> data;  // zero-padded to range_and_bearing_data_bytes, as emitted
+    SimTime at;
+  };
 
   // Sensors: set by the test.
   RobotId robot_id = 0;
@@ -59,6 +64,14 @@ class FakeRobotContext final : public RobotContext {
   // not in it gets RouteStatus::pending, as on the first ask. route_to() records each ask in
   // `route_asks`.
   std::map<RobotId, Route> routes;
+  // The range-and-bearing device (swarmnet/range_and_bearing.hpp): what range_and_bearing()
+  // returns, ascending by robot id as the kernel gives it (see_by_range_and_bearing() adds one
+  // with data the fake keeps; a test may also fill it with spans over bytes it keeps itself).
+  // With range_and_bearing_enabled false both calls refuse as the kernel does without the key;
+  // set_range_and_bearing_data() refuses more than range_and_bearing_data_bytes.
+  std::vector<RangeAndBearingReading> range_and_bearing_readings;
+  bool range_and_bearing_enabled = true;
+  std::uint32_t range_and_bearing_data_bytes = 10;  // a foot-bot's
   // World readings by name, as a world plugin would offer them (swarmnet/world.hpp).
   std::map<std::string, std::vector<double>, std::less<>> readings;
   // Requests the world offers; when not empty, request() refuses any other name, as the kernel
@@ -68,11 +81,12 @@ class FakeRobotContext final : public RobotContext {
   double left_mps = 0.0;
   double right_mps = 0.0;
   std::vector<Sent> sent;
-  std::vector<Request> requests;    // in the order made
-  std::vector<RobotId> route_asks;  // route_to() calls
-  RecordedMetrics recorded;         // metric -> observations
-  SampledSeries sampled;            // sample() calls by series name, with the time of each
-  std::string shown_state;          // the last show_state()
+  std::vector<Request> requests;                            // in the order made
+  std::vector<RobotId> route_asks;                          // route_to() calls
+  std::vector<RangeAndBearingData> range_and_bearing_data;  // set_range_and_bearing_data() calls
+  RecordedMetrics recorded;                                 // metric -> observations
+  SampledSeries sampled;    // sample() calls by series name, with the time of each
+  std::string shown_state;  // the last show_state()
 
   [[nodiscard]] RobotId id() const override { return robot_id; }
   [[nodiscard]] std::size_t robot_count() const override { return robots; }
@@ -101,6 +115,21 @@ class FakeRobotContext final : public RobotContext {
       throw std::invalid_argument("no world offers the reading '" + std::string(name) + "'");
     }
     return it->second;
+  }
+  [[nodiscard]] std::span<const RangeAndBearingReading> range_and_bearing() const override {
+    refuse_unless_range_and_bearing("range_and_bearing()");
+    return range_and_bearing_readings;
+  }
+  void set_range_and_bearing_data(std::span<const std::byte> data) override {
+    refuse_unless_range_and_bearing("set_range_and_bearing_data()");
+    if (data.size() > range_and_bearing_data_bytes) {
+      throw std::invalid_argument("set_range_and_bearing_data(): " + std::to_string(data.size()) +
+                                  " bytes is more than data_bytes, " +
+                                  std::to_string(range_and_bearing_data_bytes));
+    }
+    std::vector<std::byte> padded(range_and_bearing_data_bytes, std::byte{0});
+    std::copy(data.begin(), data.end(), padded.begin());
+    range_and_bearing_data.push_back({std::move(padded), time});
   }
   void request(std::string_view name, std::span<const double> args) override {
     if (!offered_requests.empty() && !offered_requests.contains(name)) {
@@ -140,6 +169,20 @@ class FakeRobotContext final : public RobotContext {
   }
   void show_state(std::string_view label) override { shown_state = label; }
 
+  // Adds a reading of robot `robot` where the id order puts it, carrying `data` zero-padded to
+  // range_and_bearing_data_bytes (the fake keeps the bytes).
+  void see_by_range_and_bearing(RobotId robot, double range_m, double bearing_rad,
+                                std::span<const std::byte> data = {}) {
+    std::vector<std::byte>& kept =
+        kept_range_and_bearing_data_.emplace_back(range_and_bearing_data_bytes, std::byte{0});
+    std::copy_n(data.begin(), std::min<std::size_t>(data.size(), kept.size()), kept.begin());
+    const auto at = std::lower_bound(
+        range_and_bearing_readings.begin(), range_and_bearing_readings.end(), robot,
+        [](const RangeAndBearingReading& r, RobotId id) { return r.robot < id; });
+    range_and_bearing_readings.insert(at,
+                                      RangeAndBearingReading{robot, range_m, bearing_rad, kept});
+  }
+
   // Every ray clear.
   void clear_rays() { std::fill(rays.begin(), rays.end(), range_m); }
   // One step of a differential drive with axle `axle` under the current wheel speeds: the
@@ -152,6 +195,17 @@ class FakeRobotContext final : public RobotContext {
     pose_heading_rad = std::remainder(pose_heading_rad + turn, 2.0 * std::numbers::pi);
     time += from_seconds(step_length_s);
   }
+
+ private:
+  void refuse_unless_range_and_bearing(const char* call) const {
+    if (!range_and_bearing_enabled) {
+      throw std::logic_error(std::string(call) +
+                             ": the scenario has no range-and-bearing device "
+                             "(set robots.range_and_bearing.enabled: true)");
+    }
+  }
+
+  std::deque<std::vector<std::byte>> kept_range_and_bearing_data_;  // stays put as it grows
 };
 
 }  // namespace swarmnet::testing
