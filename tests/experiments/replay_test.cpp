@@ -47,6 +47,15 @@ void expect_replay_identical(const std::string& routing, const Stack& stack, con
   EXPECT_GE(b["cpu_s"]["network"].get<double>(), 0.0);
 }
 
+// Runs configs/`config`, small, with `extra` into `run_dir`; fails the test if the run failed
+// (call it inside ASSERT_NO_FATAL_FAILURE).
+void run_small(const std::filesystem::path& run_dir, const std::string& config,
+               const std::string& extra = "") {
+  const auto run =
+      run_swarmnet("run " + kConfigs + config + kSmall + extra + " --out " + run_dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+}
+
 TEST(Replay, PacketTraceIsByteIdenticalForEveryRoutingMacAndSyncMode) {
   for (const Stack stack :
        {Stack{"ideal_mac", "aodv.yaml"}, Stack{"dcf80211+sinr", "wireless.yaml"}}) {
@@ -81,9 +90,7 @@ TEST(Replay, FrameTraceIsByteIdenticalToTheRunsOver80211) {
 TEST(Replay, PositionsRecordHoldsExactPositionsEveryStep) {
   TempDir dir;
   const auto run_dir = dir.path() / "run";
-  const auto run =
-      run_swarmnet("run " + kConfigs + "quickstart.yaml" + kSmall + " --out " + run_dir.string());
-  ASSERT_EQ(run.exit_code, 0) << run.output;
+  ASSERT_NO_FATAL_FAILURE(run_small(run_dir, "quickstart.yaml"));
   const std::string bytes = read_file(run_dir / "positions.bin");
   ASSERT_GE(bytes.size(), 32U);
   EXPECT_EQ(bytes.substr(0, 8), std::string("SNPOS\0\0\0", 8));
@@ -113,9 +120,8 @@ TEST(Replay, PositionsRecordHoldsExactPositionsEveryStep) {
 TEST(Replay, RefusesARunWithoutItsRecordsClearly) {
   TempDir dir;
   const auto run_dir = dir.path() / "run";
-  const auto run = run_swarmnet("run " + kConfigs + "quickstart.yaml" + kSmall +
-                                " --set output.mobility_trace=false --out " + run_dir.string());
-  ASSERT_EQ(run.exit_code, 0) << run.output;
+  ASSERT_NO_FATAL_FAILURE(
+      run_small(run_dir, "quickstart.yaml", " --set output.mobility_trace=false"));
   const auto replay = run_swarmnet("replay " + run_dir.string());
   EXPECT_EQ(replay.exit_code, 2);
   EXPECT_NE(replay.output.find("positions.bin"), std::string::npos) << replay.output;
@@ -127,9 +133,7 @@ TEST(Replay, RefusesARunWithoutItsRecordsClearly) {
 TEST(Replay, AsksTheRecordedRouteQueriesAndRefusesAMalformedFileByLine) {
   TempDir dir;
   const auto run_dir = dir.path() / "run";
-  const auto run = run_swarmnet("run " + kConfigs + "aodv.yaml" + kSmall +
-                                " --set output.sensing_trace=true --out " + run_dir.string());
-  ASSERT_EQ(run.exit_code, 0) << run.output;
+  ASSERT_NO_FATAL_FAILURE(run_small(run_dir, "aodv.yaml", " --set output.sensing_trace=true"));
   EXPECT_FALSE(std::filesystem::exists(run_dir / "route_queries.csv")) << "no controller asked";
   const auto queries = run_dir / "route_queries.csv";
   std::ofstream(queries) << "step,robot,destination\n3,0,2\n3,0,7\n3,4,1\n99,29,0\n";
@@ -182,9 +186,7 @@ TEST(Replay, AsksTheRecordedRouteQueriesAndRefusesAMalformedFileByLine) {
 TEST(Replay, RefusesAShorterTraceWhenNoWorldCouldHaveEndedTheRun) {
   TempDir dir;
   const auto run_dir = dir.path() / "run";
-  const auto run =
-      run_swarmnet("run " + kConfigs + "quickstart.yaml" + kSmall + " --out " + run_dir.string());
-  ASSERT_EQ(run.exit_code, 0) << run.output;
+  ASSERT_NO_FATAL_FAILURE(run_small(run_dir, "quickstart.yaml"));
   const auto scenario = run_dir / "scenario.resolved.yaml";
   std::string text = read_file(scenario);
   const std::size_t at = text.find("duration_s: 10");

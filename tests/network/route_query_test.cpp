@@ -29,7 +29,7 @@ std::vector<std::vector<RouteAnswer>> answers_per_step(const NetworkSettings& se
   return answers;
 }
 
-void ask_every_step(std::vector<StepBatch>& batches, std::vector<RouteQuery> queries) {
+void ask_every_step(std::vector<StepBatch>& batches, const std::vector<RouteQuery>& queries) {
   for (StepBatch& batch : batches) batch.route_queries = queries;
 }
 

@@ -59,8 +59,13 @@ class SensingTraceWriter {
   // step,window_end_ns,robot,record, of a row.
   void start_row(const StepResult& result, SimTime window_end, RobotId robot,
                  std::string_view record);
-  // A node id (-1 for broadcast), or nothing for kNoNode.
+  // A node id (-1 for broadcast), or nothing for kNoNode; then a comma.
   void next_hop(NodeId node);
+  // Each value, in decimal, followed by a comma.
+  template <typename... Integers>
+  void integers(Integers... values) {
+    ((lines_.integer(values), lines_.comma()), ...);
+  }
 
   TraceLines lines_;
 };
