@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <utility>
 
 #include "outputs/output_files.hpp"
 #include "session/replay.hpp"
@@ -52,17 +53,24 @@ int replay_command(const ReplayCommandOptions& options) {
         s["scenario"].get<std::string>().c_str(), s["seed"].dump().c_str(),
         s["robots"].dump().c_str(), s["steps"].dump().c_str(), s["cpu_s"]["network"].get<double>(),
         s["realtime_factor"].get<double>(), 100.0 * s["pdr"].get<double>());
-    std::printf("  outputs  %s/ (packets.csv, summary.json)\n", out.string().c_str());
+    std::string written = kPacketTraceFile;
+    for (const char* file : {kFrameTraceFile, kSensingTraceFile}) {
+      if (std::filesystem::exists(out / file)) written += std::string(", ") + file;
+    }
+    std::printf("  outputs  %s/ (%s, summary.json)\n", out.string().c_str(), written.c_str());
   }
-  if (!options.run_dir.empty() && std::filesystem::exists(options.run_dir / kPacketTraceFile)) {
-    const bool same =
-        read_bytes(options.run_dir / kPacketTraceFile) == read_bytes(out / kPacketTraceFile);
-    if (!same) {
-      std::fprintf(stderr, "swarmnet: error: the replayed packet trace differs from %s\n",
-                   (options.run_dir / kPacketTraceFile).string().c_str());
+  if (options.run_dir.empty()) return 0;
+  // The run's traces that the replay wrote too must be its bytes (the replay's correctness check).
+  const std::pair<const char*, const char*> checked[] = {{kPacketTraceFile, "packet trace"},
+                                                         {kSensingTraceFile, "sensing trace"}};
+  for (const auto& [file, what] : checked) {
+    if (!std::filesystem::exists(options.run_dir / file)) continue;
+    if (read_bytes(options.run_dir / file) != read_bytes(out / file)) {
+      std::fprintf(stderr, "swarmnet: error: the replayed %s differs from %s\n", what,
+                   (options.run_dir / file).string().c_str());
       return 1;
     }
-    if (!options.quiet) std::printf("  packets.csv is byte-identical to the run's\n");
+    if (!options.quiet) std::printf("  %s is byte-identical to the run's\n", file);
   }
   return 0;
 }

@@ -47,6 +47,15 @@ void expect_replay_identical(const std::string& routing, const Stack& stack, con
   EXPECT_GE(b["cpu_s"]["network"].get<double>(), 0.0);
 }
 
+// Runs configs/`config`, small, with `extra` into `run_dir`; fails the test if the run failed
+// (call it inside ASSERT_NO_FATAL_FAILURE).
+void run_small(const std::filesystem::path& run_dir, const std::string& config,
+               const std::string& extra = "") {
+  const auto run =
+      run_swarmnet("run " + kConfigs + config + kSmall + extra + " --out " + run_dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+}
+
 TEST(Replay, PacketTraceIsByteIdenticalForEveryRoutingMacAndSyncMode) {
   for (const Stack stack :
        {Stack{"ideal_mac", "aodv.yaml"}, Stack{"dcf80211+sinr", "wireless.yaml"}}) {
@@ -81,9 +90,7 @@ TEST(Replay, FrameTraceIsByteIdenticalToTheRunsOver80211) {
 TEST(Replay, PositionsRecordHoldsExactPositionsEveryStep) {
   TempDir dir;
   const auto run_dir = dir.path() / "run";
-  const auto run =
-      run_swarmnet("run " + kConfigs + "quickstart.yaml" + kSmall + " --out " + run_dir.string());
-  ASSERT_EQ(run.exit_code, 0) << run.output;
+  ASSERT_NO_FATAL_FAILURE(run_small(run_dir, "quickstart.yaml"));
   const std::string bytes = read_file(run_dir / "positions.bin");
   ASSERT_GE(bytes.size(), 32U);
   EXPECT_EQ(bytes.substr(0, 8), std::string("SNPOS\0\0\0", 8));
@@ -113,12 +120,65 @@ TEST(Replay, PositionsRecordHoldsExactPositionsEveryStep) {
 TEST(Replay, RefusesARunWithoutItsRecordsClearly) {
   TempDir dir;
   const auto run_dir = dir.path() / "run";
-  const auto run = run_swarmnet("run " + kConfigs + "quickstart.yaml" + kSmall +
-                                " --set output.mobility_trace=false --out " + run_dir.string());
-  ASSERT_EQ(run.exit_code, 0) << run.output;
+  ASSERT_NO_FATAL_FAILURE(
+      run_small(run_dir, "quickstart.yaml", " --set output.mobility_trace=false"));
   const auto replay = run_swarmnet("replay " + run_dir.string());
   EXPECT_EQ(replay.exit_code, 2);
   EXPECT_NE(replay.output.find("positions.bin"), std::string::npos) << replay.output;
+}
+
+// route_queries.csv beside traffic.csv is what the run's controllers asked route_to(): a replay
+// asks the same at the same windows (its sensing.csv shows the answers), and refuses a file no
+// run writes, naming the file and the line.
+TEST(Replay, AsksTheRecordedRouteQueriesAndRefusesAMalformedFileByLine) {
+  TempDir dir;
+  const auto run_dir = dir.path() / "run";
+  ASSERT_NO_FATAL_FAILURE(run_small(run_dir, "aodv.yaml", " --set output.sensing_trace=true"));
+  EXPECT_FALSE(std::filesystem::exists(run_dir / "route_queries.csv")) << "no controller asked";
+  const auto queries = run_dir / "route_queries.csv";
+  std::ofstream(queries) << "step,robot,destination\n3,0,2\n3,0,7\n3,4,1\n99,29,0\n";
+  const auto replay_dir = dir.path() / "replay";
+  const auto replay =
+      run_swarmnet("replay " + run_dir.string() + " --quiet --out " + replay_dir.string());
+  // The run's sensing.csv holds no answers, the replay's does: the check says so.
+  EXPECT_EQ(replay.exit_code, 1) << replay.output;
+  EXPECT_NE(replay.output.find("the replayed sensing trace differs"), std::string::npos)
+      << replay.output;
+  EXPECT_TRUE(read_file(run_dir / "packets.csv") == read_file(replay_dir / "packets.csv"))
+      << "asking changes nothing the network simulates";
+  const std::string sensing = read_file(replay_dir / "sensing.csv");
+  for (const char* row : {"\n3,400000000,0,route,2,400000000,,,", "\n3,400000000,0,route,7,",
+                          "\n3,400000000,4,route,1,", "\n99,10000000000,29,route,0,"}) {
+    EXPECT_NE(sensing.find(row), std::string::npos) << row << " in\n" << sensing;
+  }
+  EXPECT_EQ(std::count(sensing.begin(), sensing.end(), '\n'), 5) << sensing;
+
+  struct Malformed {
+    const char* text;
+    const char* where;
+    const char* message;
+  };
+  const Malformed malformed[] = {
+      {"step,robot,dest\n", ":1:", "not a SwarmNet route queries file"},
+      {"step,robot,destination\n1,0,2\n1,0\n", ":3:", "expected 3 fields"},
+      {"step,robot,destination\n1,x,2\n", ":2:", "'x' is not a non-negative integer"},
+      {"step,robot,destination\n1,0,30\n", ":2:", "is not a robot asking about another"},
+      {"step,robot,destination\n1,4,4\n", ":2:", "is not a robot asking about another"},
+      {"step,robot,destination\n2,0,1\n1,0,1\n", ":3:", "steps are not in ascending order"},
+      {"step,robot,destination\n2,3,1\n2,0,1\n", ":3:", "not ascending by robot"},
+      {"step,robot,destination\n2,3,1\n2,3,1\n", ":3:", "not ascending by robot"},
+      {"step,robot,destination\n100,0,1\n", ": route queries", "after the last step (100)"},
+  };
+  for (const Malformed& bad : malformed) {
+    SCOPED_TRACE(bad.text);
+    std::ofstream(queries, std::ios::trunc) << bad.text;
+    const auto refused = run_swarmnet("replay " + run_dir.string() + " --quiet --out " +
+                                      (dir.path() / "refused").string());
+    EXPECT_EQ(refused.exit_code, 1) << refused.output;
+    EXPECT_NE(refused.output.find("route_queries.csv" + std::string(bad.where)), std::string::npos)
+        << refused.output;
+    EXPECT_NE(refused.output.find(bad.message), std::string::npos) << refused.output;
+  }
 }
 
 // Only a world plugin ends a run early: without one, a positions.bin shorter than the scenario
@@ -126,9 +186,7 @@ TEST(Replay, RefusesARunWithoutItsRecordsClearly) {
 TEST(Replay, RefusesAShorterTraceWhenNoWorldCouldHaveEndedTheRun) {
   TempDir dir;
   const auto run_dir = dir.path() / "run";
-  const auto run =
-      run_swarmnet("run " + kConfigs + "quickstart.yaml" + kSmall + " --out " + run_dir.string());
-  ASSERT_EQ(run.exit_code, 0) << run.output;
+  ASSERT_NO_FATAL_FAILURE(run_small(run_dir, "quickstart.yaml"));
   const auto scenario = run_dir / "scenario.resolved.yaml";
   std::string text = read_file(scenario);
   const std::size_t at = text.find("duration_s: 10");

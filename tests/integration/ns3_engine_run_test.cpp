@@ -238,6 +238,8 @@ TEST(Ns3Engine, WhatNs3CannotRunIsRefusedBeforeTheRunWithWhereAndWhy) {
        "the ns-3 engine writes no packet trace"},
       {"output.frame_trace=true", "--set output.frame_trace",
        "the ns-3 engine writes no frame trace"},
+      {"output.sensing_trace=true", "--set output.sensing_trace",
+       "the ns-3 engine writes no sensing trace"},
       {"network.engine=native --set network.ns3.standard=80211g", "--set network.ns3.standard",
        "applies only to the ns-3 engine"},
       {"network.ns3.standard=80211g --set network.mac.params.cw_min=31",

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -38,12 +39,19 @@ void run_into(const std::filesystem::path& dir, const std::string& extra) {
 
 constexpr const char* kTraces[] = {"packets.csv", "mobility.ns2", "traffic.csv",
                                    "scenario.resolved.yaml"};
-// What controllers recorded per robot and sampled: compared when the first run wrote them.
-constexpr const char* kControllerOutputs[] = {"robot_metrics.csv", "series.csv"};
+// What controllers recorded per robot and sampled, what they were told (output.sensing_trace)
+// and the route queries they made: compared when the first run wrote them.
+constexpr const char* kControllerOutputs[] = {"robot_metrics.csv", "series.csv", "sensing.csv",
+                                              "send_options.csv", "route_queries.csv"};
+
+// What a test checks of the first of identical runs, given its directory.
+using RunCheck = std::function<void(const std::filesystem::path&)>;
 
 // Runs each variant into the same run directory (the resolved scenario names it), keeping each
-// result, and expects every output identical to the first's.
-void expect_identical_runs(const std::vector<std::string>& variants) {
+// result, and expects every output identical to the first's; then calls `check_first`, if given,
+// with the first run's directory.
+void expect_identical_runs(const std::vector<std::string>& variants,
+                           const RunCheck& check_first = {}) {
   TempDir dir;
   const auto out = dir.path() / "run";
   for (std::size_t i = 0; i < variants.size(); ++i) {
@@ -67,6 +75,7 @@ void expect_identical_runs(const std::vector<std::string>& variants) {
     EXPECT_EQ(summary_without_timing(first), summary_without_timing(other))
         << "between '" << variants[0] << "' and '" << variants[i] << "'";
   }
+  if (check_first) check_first(first);
 }
 
 // A folder holding only the test fixture plugin `name`: the fixtures' folder also holds
@@ -77,15 +86,43 @@ void copy_fixture(const TempDir& folder, const std::string& name) {
                              folder.path() / file);
 }
 
-// `base` on every transport gives the same bytes, in each sync mode.
-void expect_identical_on_every_transport(const std::string& base) {
+// `base` on every transport gives the same bytes, in each sync mode; `check_first` is called
+// with the first run of each sync mode.
+void expect_identical_on_every_transport(const std::string& base,
+                                         const RunCheck& check_first = {}) {
   for (const char* sync : {"strict", "pipelined"}) {
+    SCOPED_TRACE(std::string("sync ") + sync);
     std::vector<std::string> variants;
     for (const char* transport : {"shm", "inproc", "uds", "tcp"}) {
       variants.push_back(base + " --set sync=" + sync + " --transport " + transport);
     }
-    expect_identical_runs(variants);
+    expect_identical_runs(variants, check_first);
   }
+}
+
+const std::string kSensing = " --set output.sensing_trace=true";
+
+// The run in `run` wrote sensing.csv with rows of `record` (neighbor, report or route), and
+// `swarmnet replay` of it, the network half alone, writes the same sensing.csv and packets.csv.
+RunCheck expect_sensing_replayed(const std::string& record) {
+  return [record](const std::filesystem::path& run) {
+    const std::string sensing = read_file(run / "sensing.csv");
+    EXPECT_EQ(sensing.substr(0, sensing.find('\n')),
+              "step,window_end_ns,robot,record,peer,time_ns,port,message_id,status,reason,"
+              "next_hop,hops,attempts,frames,unicasts,first_attempt_acks,rssi_dbm,"
+              "rssi_smoothed_dbm,sinr_db");
+    EXPECT_NE(sensing.find("," + record + ","), std::string::npos) << sensing.substr(0, 500);
+    const auto summary = nlohmann::json::parse(read_file(run / "summary.json"));
+    EXPECT_EQ(summary["outputs"]["sensing_trace"], "sensing.csv");
+    const auto replayed = run.parent_path() / "replayed";
+    const auto replay = run_swarmnet("replay " + run.string() + " --out " + replayed.string());
+    ASSERT_EQ(replay.exit_code, 0) << replay.output;
+    EXPECT_NE(replay.output.find("sensing.csv is byte-identical to the run's"), std::string::npos)
+        << replay.output;
+    EXPECT_TRUE(sensing == read_file(replayed / "sensing.csv")) << "the replay's sensing.csv";
+    EXPECT_TRUE(read_file(run / "packets.csv") == read_file(replayed / "packets.csv"));
+    std::filesystem::remove_all(replayed);
+  };
 }
 
 TEST(RunDeterminism, SameSeedGivesIdenticalBytesInStrictMode) {
@@ -103,17 +140,21 @@ TEST(RunDeterminism, EveryTransportGivesIdenticalBytes) {
 
 // Radio neighbour tables cross in the step protocol like deliveries: a controller reading them
 // (the neighbor_probe fixture, beaconing in place of cbr) sees the same tables on every
-// transport, in each sync mode.
+// transport, in each sync mode; sensing.csv shows them, and a replay writes them alike.
 TEST(RunDeterminism, EveryTransportGivesIdenticalNeighborTables) {
   TempDir plugins;
   copy_fixture(plugins, "neighbor_probe");
   const std::string probe = " --set network.neighbors.enabled=true --set plugin_paths=[" +
                             plugins.path().string() +
                             "] --set 'robots.controllers.1={plugin: neighbor_probe}'";
-  expect_identical_on_every_transport(probe + " --seed 3");
+  expect_identical_on_every_transport(probe + kSensing + " --seed 3",
+                                      expect_sensing_replayed("neighbor"));
   TempDir dir;
   run_into(dir.path() / "run", probe + " --seed 3");
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "run" / "sensing.csv"))
+      << "only with output.sensing_trace";
   const auto summary = nlohmann::json::parse(read_file(dir.path() / "run" / "summary.json"));
+  EXPECT_FALSE(summary["outputs"].contains("sensing_trace"));
   const auto& seen = summary["controllers"]["neighbors"];
   EXPECT_GT(seen["sum"].get<double>(), 0.0) << seen.dump();
   EXPECT_GT(summary["controllers"]["neighbor_frames"]["mean"].get<double>(), 0.0);
@@ -130,7 +171,8 @@ TEST(RunDeterminism, EveryTransportGivesIdenticalNeighborTables) {
 // Send options and reports cross in the step protocol too: a controller sending one-hop beacons
 // and unicasts that ask for reports (the report_probe fixture) gets the same reports on every
 // transport, in each sync mode; its beacons travel one hop; and a replay of the run, which reads
-// the options from send_options.csv, gives the run's packets.
+// the options from send_options.csv, gives the run's packets and (output.sensing_trace) the
+// run's sensing.csv.
 TEST(RunDeterminism, EveryTransportGivesIdenticalSendReports) {
   TempDir plugins;
   copy_fixture(plugins, "report_probe");
@@ -138,7 +180,8 @@ TEST(RunDeterminism, EveryTransportGivesIdenticalSendReports) {
                             "] --set 'network.mac={plugin: dcf80211}'"
                             " --set 'network.routing={plugin: aodv}'"
                             " --set 'robots.controllers.1={plugin: report_probe}'";
-  expect_identical_on_every_transport(probe + " --seed 3");
+  expect_identical_on_every_transport(probe + kSensing + " --seed 3",
+                                      expect_sensing_replayed("report"));
   TempDir dir;
   const auto run = dir.path() / "run";
   run_into(run, probe + " --seed 3");
@@ -161,7 +204,8 @@ TEST(RunDeterminism, EveryTransportGivesIdenticalSendReports) {
 
 // Route queries cross with the batch and their answers with the result: a controller asking
 // route_to() every step (the route_probe fixture) reads the same answers on every transport, in
-// each sync mode, and asking changes no byte of what the network simulates.
+// each sync mode, and asking changes no byte of what the network simulates. The run records the
+// queries (route_queries.csv), so a replay asks them too and writes the run's sensing.csv.
 TEST(RunDeterminism, EveryTransportGivesIdenticalRouteAnswers) {
   TempDir plugins;
   copy_fixture(plugins, "route_probe");
@@ -170,9 +214,11 @@ TEST(RunDeterminism, EveryTransportGivesIdenticalRouteAnswers) {
       " --set 'network.routing={plugin: aodv}'";
   const std::string probe = stack + " --set plugin_paths=[" + plugins.path().string() +
                             "] --set 'robots.controllers.1={plugin: route_probe}'";
-  expect_identical_on_every_transport(probe);
+  expect_identical_on_every_transport(probe + kSensing, expect_sensing_replayed("route"));
   TempDir dir;
   run_into(dir.path() / "asked", probe);
+  const std::string queries = read_file(dir.path() / "asked" / "route_queries.csv");
+  EXPECT_EQ(queries.rfind("step,robot,destination\n0,", 0), 0U) << queries.substr(0, 200);
   const auto summary = nlohmann::json::parse(read_file(dir.path() / "asked" / "summary.json"));
   const auto& controllers = summary["controllers"];
   const double robots = summary["robots"].get<double>();
@@ -203,6 +249,9 @@ TEST(RunDeterminism, EveryTransportGivesIdenticalRouteAnswers) {
   run_into(dir.path() / "quiet", probe + " --set 'robots.controllers.1.params.ask=false'");
   EXPECT_TRUE(read_file(dir.path() / "asked" / "packets.csv") ==
               read_file(dir.path() / "quiet" / "packets.csv"));
+  // Neither asked nor told: no file of either kind.
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "quiet" / "route_queries.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "quiet" / "sensing.csv"));
 }
 
 // The range-and-bearing device belongs to the robot half: a controller using it (the rab_probe

@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "network/network_simulator.hpp"
+#include "network/sensing_trace.hpp"
 #include "network_test_support.hpp"
 
 namespace swarmnet {
@@ -27,7 +29,7 @@ std::vector<std::vector<RouteAnswer>> answers_per_step(const NetworkSettings& se
   return answers;
 }
 
-void ask_every_step(std::vector<StepBatch>& batches, std::vector<RouteQuery> queries) {
+void ask_every_step(std::vector<StepBatch>& batches, const std::vector<RouteQuery>& queries) {
   for (StepBatch& batch : batches) batch.route_queries = queries;
 }
 
@@ -126,6 +128,43 @@ TEST(RouteQueries, AQueryNamingNoOtherRobotIsRefusedBeforeTheWindow) {
     EXPECT_THROW(simulator.run_step(batches[0], result), std::invalid_argument);
   }
   EXPECT_EQ(simulator.now(), kTimeZero);
+}
+
+// With a sensing trace (output.sensing_trace) the simulator writes, window by window, exactly
+// the rows of what it returned (neighbour tables, send reports, route answers), and simulates
+// the same: its packet trace is the one of a simulator without it.
+TEST(RouteQueries, TheSensingTraceHoldsWhatEveryWindowReturnedAndChangesNothing) {
+  PluginLoader loader;
+  NetworkSettings settings = test::make_settings(loader, 12, "dcf80211", "aodv");
+  settings.arena.width_m = 300.0;
+  settings.arena.height_m = 300.0;
+  settings.network.neighbors.enabled = true;
+  std::vector<StepBatch> batches = test::random_batches(settings, 7, 40, 3, 0.2, 2.0);
+  for (StepBatch& batch : batches) {
+    for (AppMessage& message : batch.messages) message.report = message.message_id % 2 == 0;
+  }
+  ask_every_step(batches, {{0, 5}, {3, 1}, {3, 7}});
+
+  std::ostringstream sensing;
+  std::ostringstream packets;
+  std::ostringstream expected;
+  SensingTraceWriter returned(&expected);
+  {
+    NetworkSimulator simulator(settings, loader, &packets, nullptr, &sensing);
+    StepResult result;
+    for (const StepBatch& batch : batches) {
+      simulator.run_step(batch, result);
+      returned.record(result, simulator.now());
+    }
+    simulator.finish();
+  }
+  returned.finish();
+  const std::string text = sensing.str();
+  EXPECT_EQ(text, expected.str());
+  for (const char* record : {",neighbor,", ",report,", ",route,"}) {
+    EXPECT_NE(text.find(record), std::string::npos) << record;
+  }
+  EXPECT_EQ(packets.str(), test::run(settings, loader, batches).trace);
 }
 
 }  // namespace

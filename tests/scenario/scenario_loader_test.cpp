@@ -142,6 +142,7 @@ TEST(ScenarioLoader, OptionalKeysTakeTheirDocumentedDefaults) {
   EXPECT_EQ(s.output.dir, fs::path("runs/minimal-seed1"));
   EXPECT_TRUE(s.output.packet_trace);
   EXPECT_FALSE(s.output.frame_trace) << "off unless asked for: it is large";
+  EXPECT_FALSE(s.output.sensing_trace) << "off unless asked for: runs without it stay as they were";
   EXPECT_TRUE(s.output.mobility_trace);
   EXPECT_EQ(s.output.mobility_interval_s, 0.0);
   EXPECT_TRUE(s.output.traffic_schedule);
@@ -384,8 +385,8 @@ TEST(ScenarioLoader, ResolvedScenarioHasEveryKeyInAFixedOrder) {
   std::vector<std::string> output;
   for (const auto& entry : r["output"]) output.push_back(entry.first.as<std::string>());
   EXPECT_EQ(output,
-            (std::vector<std::string>{"dir", "packet_trace", "frame_trace", "mobility_trace",
-                                      "mobility_interval_s", "traffic_schedule"}))
+            (std::vector<std::string>{"dir", "packet_trace", "frame_trace", "sensing_trace",
+                                      "mobility_trace", "mobility_interval_s", "traffic_schedule"}))
       << "a derived key takes its schema place, not the end";
 }
 

@@ -30,6 +30,7 @@ std::string stopped_by_signal() {
 struct NetworkRun {
   std::optional<AtomicFile> trace;
   std::optional<AtomicFile> frames;
+  std::optional<AtomicFile> sensing;
   std::unique_ptr<NetworkEngine> engine;
   double cpu_start = 0.0;  // thread CPU time when the set-up began
 };
@@ -43,10 +44,12 @@ void open_run(NetworkRun& run, const NetworkSetup& setup) {
   try {
     if (scenario.output.packet_trace) run.trace.emplace(setup.run_dir / kPacketTraceFile);
     if (scenario.output.frame_trace) run.frames.emplace(setup.run_dir / kFrameTraceFile);
-    run.engine =
-        make_network_engine(scenario, *setup.loader, run.trace ? &run.trace->stream() : nullptr,
-                            run.frames ? &run.frames->stream() : nullptr,
-                            setup.stops_on_signal ? &stop_requested : nullptr);
+    if (scenario.output.sensing_trace) run.sensing.emplace(setup.run_dir / kSensingTraceFile);
+    const NetworkTraceStreams traces{run.trace ? &run.trace->stream() : nullptr,
+                                     run.frames ? &run.frames->stream() : nullptr,
+                                     run.sensing ? &run.sensing->stream() : nullptr};
+    run.engine = make_network_engine(scenario, *setup.loader, traces,
+                                     setup.stops_on_signal ? &stop_requested : nullptr);
   } catch (const std::bad_alloc&) {
     const std::uint64_t heap_now = heap_in_use_bytes();
     const std::uint64_t reached = heap_now > heap_before ? heap_now - heap_before : 0;
@@ -85,7 +88,7 @@ void serve(NetworkRun& run, const NetworkSetup& setup, StepChannel& channel) {
     if (!sent.ok()) throw RunError(sent.error);
   }
   simulator.finish();
-  for (std::optional<AtomicFile>* file : {&run.trace, &run.frames}) {
+  for (std::optional<AtomicFile>* file : {&run.trace, &run.frames, &run.sensing}) {
     if (!*file) continue;
     if (setup.traces == TraceCommit::by_robot_half) {
       (*file)->hand_over();

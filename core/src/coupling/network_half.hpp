@@ -15,7 +15,8 @@
 
 namespace swarmnet {
 
-// Who renames the network half's traces (packets.csv, frames.csv) to their final names.
+// Who renames the network half's traces (packets.csv, frames.csv, sensing.csv) to their final
+// names.
 enum class TraceCommit : std::uint8_t {
   here,           // the network half, before it sends its report (a server's own directory)
   by_robot_half,  // the robot half, with the run's other outputs once the whole run succeeded;
@@ -50,11 +51,11 @@ Welcome welcome_for(const Scenario& scenario);
 // Answers the handshake: reads the hello, decides the setup, builds the network engine (its
 // fixed cost: a scenario that does not fit is refused here), then sends the welcome, or a
 // failure with the reason. Then serves steps until the robot half sends finish, finishes the
-// packet and frame traces in the run directory (when the scenario asks for them), committing them
-// or not as NetworkSetup::traces says (a failed write is an error of the run, with the system's
-// reason), and sends the report. On any error it tells the robot half why (a failure record),
-// closes the channel and throws RunError. `welcomed`, when given, is set once the welcome is sent
-// (the run began).
+// packet, frame and sensing traces in the run directory (when the scenario asks for them),
+// committing them or not as NetworkSetup::traces says (a failed write is an error of the run,
+// with the system's reason), and sends the report. On any error it tells the robot half why (a
+// failure record), closes the channel and throws RunError. `welcomed`, when given, is set once the
+// welcome is sent (the run began).
 void serve_network_connection(StepChannel& channel,
                               const std::function<NetworkSetup(const Hello&)>& setup,
                               bool* welcomed = nullptr);

@@ -35,12 +35,14 @@ SimTime checked_step(const NetworkSettings& settings) {
 }  // namespace
 
 NetworkSimulator::NetworkSimulator(const NetworkSettings& settings, PluginLoader& loader,
-                                   std::ostream* packet_trace, std::ostream* frame_trace)
+                                   std::ostream* packet_trace, std::ostream* frame_trace,
+                                   std::ostream* sensing_trace)
     : traffic_seed_(settings.traffic_seed),
       routing_name_(settings.network.routing.name),
       step_(checked_step(settings)),
       trace_(packet_trace),
       frames_(frame_trace),
+      sensing_(sensing_trace),
       channel_(settings, PropagationChain(settings, loader), scheduler_, settings.nodes),
       application_(settings.nodes, metrics_, trace_, packet_uids_, send_reports_) {
   if (settings.network.neighbors.enabled) {
@@ -140,10 +142,12 @@ void NetworkSimulator::run_step(const StepBatch& batch, StepResult& result) {
   result.send_reports.clear();
   send_reports_.collect(result.send_reports);
   answer_route_queries(batch.route_queries, result.routes);
+  result.events = events;
+  if (sensing_.enabled()) sensing_.record(result, batch.start + step_);
 
   trace_.flush();
   frames_.flush();
-  result.events = events;
+  sensing_.flush();
 }
 
 void NetworkSimulator::answer_route_queries(std::span<const RouteQuery> queries,
@@ -173,6 +177,7 @@ NetworkReport NetworkSimulator::report() const {
 void NetworkSimulator::finish() {
   trace_.finish();
   frames_.finish();
+  sensing_.finish();
 }
 
 }  // namespace swarmnet

@@ -27,6 +27,7 @@
 #include "network/packet_trace.hpp"
 #include "network/packet_uid_source.hpp"
 #include "network/scheduler.hpp"
+#include "network/sensing_trace.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "protocol/step_data.hpp"
 
@@ -34,13 +35,15 @@ namespace swarmnet {
 
 class NetworkSimulator final : public NetworkEngine {
  public:
-  // `packet_trace` and `frame_trace` may be null (no trace); each must outlive finish(). Creates
+  // `packet_trace`, `frame_trace` and `sensing_trace` may be null (no trace); each must outlive
+  // finish(). Creates
   // one node per robot, one MAC and one routing instance per node, and the propagation chain, then
   // calls attach() on every node's MAC and routing (node order). Per-node plugin seeds:
   // derive_seed(settings.seed, {hash_name(kind), hash_name(plugin name), node}).
   // Throws PluginError or std::invalid_argument on a bad set-up.
   NetworkSimulator(const NetworkSettings& settings, PluginLoader& loader,
-                   std::ostream* packet_trace, std::ostream* frame_trace = nullptr);
+                   std::ostream* packet_trace, std::ostream* frame_trace = nullptr,
+                   std::ostream* sensing_trace = nullptr);
   NetworkSimulator(const NetworkSimulator&) = delete;
   NetworkSimulator& operator=(const NetworkSimulator&) = delete;
   NetworkSimulator(NetworkSimulator&&) = delete;
@@ -53,13 +56,14 @@ class NetworkSimulator final : public NetworkEngine {
   // order, events run in the window). batch.start must not be before the end of the previous
   // window; a batch with the wrong number of positions, or a message or a route query naming an
   // unknown robot, is refused with std::invalid_argument before anything is simulated. Route
-  // queries are answered at the window's end (result.routes).
+  // queries are answered at the window's end (result.routes). With a sensing trace, what
+  // `result` holds for the robot half's controllers is written to it (network/sensing_trace.hpp).
   void run_step(const StepBatch& batch, StepResult& result) override;
 
   // Metrics so far (keys and definitions: network_metrics.hpp).
   [[nodiscard]] NetworkReport report() const override;
 
-  // Flushes the packet and frame traces (they have no footer); call once, at the end.
+  // Flushes the packet, frame and sensing traces (they have no footer); call once, at the end.
   void finish() override;
 
   [[nodiscard]] SimTime now() const { return scheduler_.now(); }
@@ -90,6 +94,7 @@ class NetworkSimulator final : public NetworkEngine {
   NetworkMetrics metrics_;
   PacketTraceWriter trace_;
   FrameTraceWriter frames_;
+  SensingTraceWriter sensing_;
   PacketUidSource packet_uids_;
   SendReports send_reports_;
   Channel channel_;

@@ -1,7 +1,7 @@
-// The lines of a CSV trace (packets.csv, frames.csv) on their way to a stream: fields appended to
-// the line being written, integers in decimal and node ids with -1 for broadcast, without locale
-// or allocation per field (a trace is the same text on every platform); lines batched in memory
-// and handed to the stream in large writes.
+// The lines of a CSV trace (packets.csv, frames.csv, sensing.csv) on their way to a stream: fields
+// appended to the line being written, integers in decimal, node ids with -1 for broadcast and reals
+// in their shortest round-trip form, without locale or allocation per field (a trace is the same
+// text on every platform); lines batched in memory and handed to the stream in large writes.
 #pragma once
 
 #include <charconv>
@@ -36,6 +36,13 @@ class TraceLines {
   void integer(Integer value) {
     static_assert(std::is_integral_v<Integer>);
     char digits[24];
+    const auto result = std::to_chars(std::begin(digits), std::end(digits), value);
+    buffer_.append(digits, result.ptr);
+  }
+  // The shortest decimal that reads back as the same double (std::to_chars), as
+  // text/shortest_number.hpp writes reals; "inf", "-inf" or "nan" for those.
+  void real(double value) {
+    char digits[32];
     const auto result = std::to_chars(std::begin(digits), std::end(digits), value);
     buffer_.append(digits, result.ptr);
   }

@@ -12,10 +12,10 @@ namespace swarmnet {
 namespace {
 
 constexpr std::array kOutputFiles = {
-    kSummaryFile,        kResolvedScenarioFile, kLogFile,
-    kPacketTraceFile,    kFrameTraceFile,       kMobilityTraceFile,
-    kPositionsTraceFile, kTrafficScheduleFile,  kObjectTraceFile,
-    kViewStatesFile,     kViewPageFile,         kHeadingsTraceFile};
+    kSummaryFile,         kResolvedScenarioFile, kLogFile,           kPacketTraceFile,
+    kFrameTraceFile,      kSensingTraceFile,     kMobilityTraceFile, kPositionsTraceFile,
+    kTrafficScheduleFile, kSendOptionsFile,      kRouteQueriesFile,  kObjectTraceFile,
+    kViewStatesFile,      kViewPageFile,         kHeadingsTraceFile};
 
 bool is_output_file(const std::string& name) {
   return std::find(kOutputFiles.begin(), kOutputFiles.end(), name) != kOutputFiles.end();

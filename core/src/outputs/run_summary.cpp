@@ -34,12 +34,14 @@ Json outputs_json(const Scenario& scenario, bool replay) {
   if (replay) {
     Json outputs = {{"summary", kSummaryFile}, {"packet_trace", kPacketTraceFile}};
     if (scenario.output.frame_trace) outputs["frame_trace"] = kFrameTraceFile;
+    if (scenario.output.sensing_trace) outputs["sensing_trace"] = kSensingTraceFile;
     return outputs;
   }
   Json outputs = {
       {"summary", kSummaryFile}, {"scenario", kResolvedScenarioFile}, {"log", kLogFile}};
   if (scenario.output.packet_trace) outputs["packet_trace"] = kPacketTraceFile;
   if (scenario.output.frame_trace) outputs["frame_trace"] = kFrameTraceFile;
+  if (scenario.output.sensing_trace) outputs["sensing_trace"] = kSensingTraceFile;
   if (scenario.output.mobility_trace) {
     outputs["mobility_trace"] = kMobilityTraceFile;
     outputs["positions"] = kPositionsTraceFile;

@@ -4,9 +4,24 @@
 
 namespace swarmnet {
 
+std::ostream& TrafficScheduleWriter::LazyFile::stream() {
+  if (out_ == nullptr) {
+    out_ = &open_();
+    *out_ << header_;
+  }
+  return *out_;
+}
+
 TrafficScheduleWriter::TrafficScheduleWriter(std::ostream& out, std::uint64_t seed, SimTime step,
-                                             std::function<std::ostream&()> open_send_options)
-    : out_(out), seed_(seed), step_(step), open_send_options_(std::move(open_send_options)) {
+                                             Open open_send_options, Open open_route_queries,
+                                             bool ports)
+    : out_(out),
+      seed_(seed),
+      step_(step),
+      ports_(ports),
+      send_options_(std::move(open_send_options),
+                    ports ? "message_id,hop_limit,report,port\n" : "message_id,hop_limit,report\n"),
+      route_queries_(std::move(open_route_queries), "step,robot,destination\n") {
   out_ << "message_id,step,inject_ns,source,destination,payload_bytes\n";
 }
 
@@ -21,14 +36,18 @@ void TrafficScheduleWriter::write(const StepBatch& batch) {
       out_ << message.destination;
     }
     out_ << ',' << message.payload.size() << '\n';
-    if ((message.hop_limit != 0 || message.report) && open_send_options_) {
-      if (send_options_ == nullptr) {
-        send_options_ = &open_send_options_();
-        *send_options_ << "message_id,hop_limit,report\n";
-      }
-      *send_options_ << message.message_id << ',' << unsigned{message.hop_limit} << ','
-                     << (message.report ? 1 : 0) << '\n';
+    if ((message.hop_limit != 0 || message.report) && send_options_.wanted()) {
+      std::ostream& options = send_options_.stream();
+      options << message.message_id << ',' << unsigned{message.hop_limit} << ','
+              << (message.report ? 1 : 0);
+      if (ports_) options << ',' << message.port;
+      options << '\n';
     }
+  }
+  if (batch.route_queries.empty() || !route_queries_.wanted()) return;
+  std::ostream& queries = route_queries_.stream();
+  for (const RouteQuery& query : batch.route_queries) {
+    queries << batch.step << ',' << query.robot << ',' << query.destination << '\n';
   }
 }
 

@@ -292,6 +292,13 @@ void check_output(YAML::Node& tree, KeyFacts& keys) {
     keys.refuse(frames, "the ns-3 engine writes no frame trace (frames.csv)",
                 "false with network.engine: ns3 (summary.json has the MAC's counters)");
   }
+  const KeyPath sensing({"output", "sensing_trace"});
+  if (keys.given(sensing) && keys.text(sensing) == "true") {
+    keys.refuse(sensing,
+                "the ns-3 engine writes no sensing trace (sensing.csv): it gives controllers no "
+                "neighbour tables, send reports or route answers",
+                "false with network.engine: ns3");
+  }
 }
 
 }  // namespace

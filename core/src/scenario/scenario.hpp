@@ -25,6 +25,8 @@ struct OutputConfig {
   std::filesystem::path dir;  // resolved: --out, else output.dir, else runs/<name>-seed<seed>
   bool packet_trace = true;
   bool frame_trace = false;  // every frame on the air (frames.csv): large, so off by default
+  // What the network half handed the controllers each window (sensing.csv)
+  bool sensing_trace = false;
   bool mobility_trace = true;
   double mobility_interval_s = 0.0;  // 0: every step
   bool traffic_schedule = true;

@@ -187,6 +187,7 @@ Scenario build(const YAML::Node& tree, const std::map<std::string, PluginChoice>
   s.output.dir = output["dir"].as<std::string>();
   s.output.packet_trace = output["packet_trace"].as<bool>();
   s.output.frame_trace = output["frame_trace"].as<bool>();
+  s.output.sensing_trace = output["sensing_trace"].as<bool>();
   s.output.mobility_trace = output["mobility_trace"].as<bool>();
   s.output.mobility_interval_s = output["mobility_interval_s"].as<double>();
   s.output.traffic_schedule = output["traffic_schedule"].as<bool>();

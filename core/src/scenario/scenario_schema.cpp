@@ -326,6 +326,10 @@ const KeySpec& scenario_schema() {
           .defaults("true"),
       boolean_key("frame_trace", "Write every frame put on the air (frames.csv).")
           .defaults("false"),
+      boolean_key("sensing_trace",
+                  "Write the neighbour tables, send reports and route answers the network half "
+                  "gave the controllers, per step (sensing.csv).")
+          .defaults("false"),
       boolean_key("mobility_trace", "Write the ns-2 mobility trace.").defaults("true"),
       real_key("mobility_interval_s", "s", "Mobility trace sampling interval; 0 = every step.")
           .at_least(0).defaults("0"),

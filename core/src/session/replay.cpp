@@ -99,22 +99,36 @@ std::vector<TrafficRow> read_traffic(const std::filesystem::path& path) {
   return rows;
 }
 
+// The first line of `path`, without its line break; empty when it cannot be read.
+std::string first_line(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
 // send_options.csv (outputs/traffic_schedule.hpp) beside `traffic`, applied to the messages it
-// names; absent when no message of the run had options.
+// names; absent when no message of the run had options. A run with a sensing trace adds the
+// sending controller's port, which its send reports name; without it, replayed messages have
+// port 0 (nothing else the network half writes shows a port).
 void apply_send_options(const std::filesystem::path& traffic, std::vector<TrafficRow>& rows) {
   const std::filesystem::path path = traffic.parent_path() / kSendOptionsFile;
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) return;
   std::map<std::uint64_t, TrafficRow*> by_id;
   for (TrafficRow& row : rows) by_id[row.message.message_id] = &row;
-  read_csv(path, "message_id,hop_limit,report", "send options file", 3,
-           [&](const std::vector<std::string>& fields, const std::string& where) {
+  constexpr const char* kWithPorts = "message_id,hop_limit,report,port";
+  const bool ports = first_line(path) == kWithPorts;
+  read_csv(path, ports ? kWithPorts : "message_id,hop_limit,report", "send options file",
+           ports ? 4 : 3, [&](const std::vector<std::string>& fields, const std::string& where) {
              const std::uint64_t id = parse_unsigned(fields[0], where);
              const std::uint64_t hop_limit = parse_unsigned(fields[1], where);
              const std::uint64_t report = parse_unsigned(fields[2], where);
              if (hop_limit > 255 || report > 1) {
                throw RunError(where + ": hop_limit is 0 to 255 and report 0 or 1");
              }
+             const std::uint64_t port = ports ? parse_unsigned(fields[3], where) : 0;
+             if (port > 65535) throw RunError(where + ": port is 0 to 65535");
              const auto row = by_id.find(id);
              if (row == by_id.end()) {
                throw RunError(where + ": message " + std::to_string(id) + " is not in " +
@@ -122,7 +136,58 @@ void apply_send_options(const std::filesystem::path& traffic, std::vector<Traffi
              }
              row->second->message.hop_limit = static_cast<std::uint8_t>(hop_limit);
              row->second->message.report = report == 1;
+             row->second->message.port = static_cast<std::uint16_t>(port);
            });
+}
+
+struct RouteQueryRow {
+  std::uint64_t step = 0;
+  RouteQuery query;
+};
+
+// route_queries.csv (outputs/traffic_schedule.hpp) beside `traffic`, in file order: each step's
+// queries as the run's batch held them. Empty when absent (no controller of the run asked).
+// Refuses, naming the line, what no run writes: a robot that is not one of the scenario's
+// `robots`, a robot asking about itself, steps out of order, a step's queries not ascending by
+// (robot, destination), or more than kMaxRouteQueriesPerRobot of one robot in a step.
+std::vector<RouteQueryRow> read_route_queries(const std::filesystem::path& traffic,
+                                              std::uint32_t robots) {
+  const std::filesystem::path path = traffic.parent_path() / kRouteQueriesFile;
+  std::vector<RouteQueryRow> rows;
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return rows;
+  std::uint32_t asked_by_robot = 0;  // queries of rows.back()'s robot in its step
+  read_csv(path, "step,robot,destination", "route queries file", 3,
+           [&](const std::vector<std::string>& fields, const std::string& where) {
+             RouteQueryRow row;
+             row.step = parse_unsigned(fields[0], where);
+             const std::uint64_t robot = parse_unsigned(fields[1], where);
+             const std::uint64_t destination = parse_unsigned(fields[2], where);
+             if (robot >= robots || destination >= robots || robot == destination) {
+               throw RunError(where + ": robot " + fields[1] + " asking about " + fields[2] +
+                              " is not a robot asking about another of the scenario's " +
+                              std::to_string(robots));
+             }
+             row.query = RouteQuery{static_cast<RobotId>(robot), static_cast<RobotId>(destination)};
+             if (!rows.empty() && row.step < rows.back().step) {
+               throw RunError(where + ": steps are not in ascending order");
+             }
+             const bool same_step = !rows.empty() && row.step == rows.back().step;
+             if (same_step && !(rows.back().query < row.query)) {
+               throw RunError(where +
+                              ": a step's queries are not ascending by robot, then "
+                              "destination, without repeats");
+             }
+             asked_by_robot =
+                 same_step && rows.back().query.robot == row.query.robot ? asked_by_robot + 1 : 1;
+             if (asked_by_robot > kMaxRouteQueriesPerRobot) {
+               throw RunError(where + ": robot " + fields[1] + " asks more than " +
+                              std::to_string(kMaxRouteQueriesPerRobot) + " routes in step " +
+                              fields[0]);
+             }
+             rows.push_back(row);
+           });
+  return rows;
 }
 
 }  // namespace
@@ -140,6 +205,8 @@ ReplayOutcome replay_network(const ReplayInputs& inputs, const std::filesystem::
   const PositionsTrace positions = read_positions_trace(inputs.positions);
   std::vector<TrafficRow> traffic = read_traffic(inputs.traffic);
   apply_send_options(inputs.traffic, traffic);
+  const std::vector<RouteQueryRow> route_queries =
+      read_route_queries(inputs.traffic, scenario.robots.count);
   const SimTime step = from_seconds(scenario.step_s);
   // Fewer steps than the scenario's only when a world plugin may have ended the run early.
   const bool may_end_early = !scenario.worlds.empty();
@@ -162,16 +229,21 @@ ReplayOutcome replay_network(const ReplayInputs& inputs, const std::filesystem::
   const double cpu_start = thread_cpu_seconds();
   std::optional<AtomicFile> trace;
   std::optional<AtomicFile> frames;
+  std::optional<AtomicFile> sensing;
   if (scenario.network.engine == NetworkEngineKind::native) {
     trace.emplace(out_dir / kPacketTraceFile);
     if (scenario.output.frame_trace) frames.emplace(out_dir / kFrameTraceFile);
+    if (scenario.output.sensing_trace) sensing.emplace(out_dir / kSensingTraceFile);
   }
-  const std::unique_ptr<NetworkEngine> engine = make_network_engine(
-      scenario, loader, trace ? &trace->stream() : nullptr, frames ? &frames->stream() : nullptr);
+  const NetworkTraceStreams traces{trace ? &trace->stream() : nullptr,
+                                   frames ? &frames->stream() : nullptr,
+                                   sensing ? &sensing->stream() : nullptr};
+  const std::unique_ptr<NetworkEngine> engine = make_network_engine(scenario, loader, traces);
   NetworkEngine& simulator = *engine;
   StepBatch batch;
   StepResult result;
   std::size_t next = 0;
+  std::size_t next_query = 0;
   for (std::uint64_t i = 0; i < positions.steps; ++i) {
     batch.step = i;
     batch.start = step * static_cast<std::int64_t>(i);
@@ -191,16 +263,26 @@ ReplayOutcome replay_network(const ReplayInputs& inputs, const std::filesystem::
       }
       batch.messages.push_back(row.message);
     }
+    batch.route_queries.clear();
+    for (; next_query < route_queries.size() && route_queries[next_query].step == i; ++next_query) {
+      batch.route_queries.push_back(route_queries[next_query].query);
+    }
     simulator.run_step(batch, result);
   }
   if (next != traffic.size()) {
     throw RunError(inputs.traffic.string() + ": messages after the last step (" +
                    std::to_string(traffic[next].step) + ")");
   }
+  if (next_query != route_queries.size()) {
+    throw RunError((inputs.traffic.parent_path() / kRouteQueriesFile).string() +
+                   ": route queries after the last step (" +
+                   std::to_string(route_queries[next_query].step) + ")");
+  }
   simulator.finish();
   const double network_cpu = thread_cpu_seconds() - cpu_start;
-  if (trace) trace->commit();
-  if (frames) frames->commit();
+  for (std::optional<AtomicFile>* file : {&trace, &frames, &sensing}) {
+    if (*file) (*file)->commit();
+  }
 
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

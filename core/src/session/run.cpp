@@ -9,6 +9,7 @@
 #include <optional>
 #include <sstream>
 #include <thread>
+#include <utility>
 
 #include "coupling/cpu_clock.hpp"
 #include "coupling/network_half.hpp"
@@ -218,15 +219,22 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
       objects.emplace(objects_file->stream(), from_seconds(scenario.step_s));
     }
     std::optional<AtomicFile> traffic_file;
-    std::optional<AtomicFile> send_options_file;  // only once a message had options
+    std::optional<AtomicFile> send_options_file;   // only once a message had options
+    std::optional<AtomicFile> route_queries_file;  // only once a controller asked route_to()
     std::optional<TrafficScheduleWriter> traffic;
     if (scenario.output.traffic_schedule) {
       traffic_file.emplace(outcome.dir / kTrafficScheduleFile);
-      traffic.emplace(traffic_file->stream(), scenario.seed, from_seconds(scenario.step_s),
-                      [&]() -> std::ostream& {
-                        send_options_file.emplace(outcome.dir / kSendOptionsFile);
-                        return send_options_file->stream();
-                      });
+      traffic.emplace(
+          traffic_file->stream(), scenario.seed, from_seconds(scenario.step_s),
+          [&]() -> std::ostream& {
+            send_options_file.emplace(outcome.dir / kSendOptionsFile);
+            return send_options_file->stream();
+          },
+          [&]() -> std::ostream& {
+            route_queries_file.emplace(outcome.dir / kRouteQueriesFile);
+            return route_queries_file->stream();
+          },
+          scenario.output.sensing_trace);
     }
 
     for (const std::string& name : remove_stale_segments()) {
@@ -294,6 +302,7 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
     if (objects_file) commit.add(*objects_file);
     if (traffic_file) commit.add(*traffic_file);
     if (send_options_file) commit.add(*send_options_file);
+    if (route_queries_file) commit.add(*route_queries_file);
     if (series_file) commit.add(*series_file);
     std::optional<AtomicFile> robot_metrics_file;
     if (!world.robot_metrics().empty()) {
@@ -311,13 +320,12 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
     // left their renaming to this half; a remote one commits them on its own host.
     if (const pid_t network = link->local_network_pid(); network > 0) {
       const std::string suffix = ".partial-" + std::to_string(network);
-      if (scenario.output.packet_trace) {
-        commit.add(outcome.dir / (std::string(kPacketTraceFile) + suffix),
-                   outcome.dir / kPacketTraceFile);
-      }
-      if (scenario.output.frame_trace) {
-        commit.add(outcome.dir / (std::string(kFrameTraceFile) + suffix),
-                   outcome.dir / kFrameTraceFile);
+      const std::pair<bool, const char*> traces[] = {
+          {scenario.output.packet_trace, kPacketTraceFile},
+          {scenario.output.frame_trace, kFrameTraceFile},
+          {scenario.output.sensing_trace, kSensingTraceFile}};
+      for (const auto& [wanted, name] : traces) {
+        if (wanted) commit.add(outcome.dir / (std::string(name) + suffix), outcome.dir / name);
       }
     }
 
