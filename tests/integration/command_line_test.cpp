@@ -148,10 +148,13 @@ TEST(CommandLine, ARunDirectoryHoldingAnEarlierRunIsReplacedOnlyWhenAsked) {
   EXPECT_NE(again.output.find("holds an earlier run"), std::string::npos) << again.output;
   EXPECT_NE(again.output.find("--overwrite"), std::string::npos) << again.output;
   std::ofstream(dir.path() / "notes.txt") << "mine\n";
+  // An output this run does not write (nothing samples) goes with the earlier run's.
+  std::ofstream(dir.path() / "series.csv") << "time_ns,robot,series,value\n0,0,stale,1\n";
   const auto replaced = run_swarmnet(run + " --overwrite");
   EXPECT_EQ(replaced.exit_code, 0) << replaced.output;
   EXPECT_TRUE(std::filesystem::exists(dir.path() / "summary.json"));
   EXPECT_EQ(read_file(dir.path() / "notes.txt"), "mine\n");  // never removed
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "series.csv"));
   EXPECT_NE(read_file(dir.path() / "run.log").find("--overwrite: removed the earlier run's"),
             std::string::npos);
 }

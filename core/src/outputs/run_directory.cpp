@@ -15,7 +15,8 @@ constexpr std::array kOutputFiles = {
     kSummaryFile,         kResolvedScenarioFile, kLogFile,           kPacketTraceFile,
     kFrameTraceFile,      kSensingTraceFile,     kMobilityTraceFile, kPositionsTraceFile,
     kTrafficScheduleFile, kSendOptionsFile,      kRouteQueriesFile,  kObjectTraceFile,
-    kViewStatesFile,      kViewPageFile,         kHeadingsTraceFile};
+    kViewStatesFile,      kViewPageFile,         kHeadingsTraceFile, kRobotMetricsFile,
+    kSeriesFile};
 
 bool is_output_file(const std::string& name) {
   return std::find(kOutputFiles.begin(), kOutputFiles.end(), name) != kOutputFiles.end();
