@@ -29,7 +29,7 @@ PluginInfo RelayChain::info() {
       "the lane (y) it started on. mode none: relays stay, the leader goes spacing_m. geometric: "
       "relay k drives to k * spacing_m, the leader to (relays + 1) * spacing_m. link_aware "
       "(needs network.neighbors.enabled): all leave together; a relay anchors where its upstream "
-      "(the base, or the previous relay) is unheard or weak: smoothed RSSI below "
+      "(the base, or the previous relay) is weak, or unheard for lost_after_s: smoothed RSSI below "
       "rssi_threshold_dbm, or fewer than min_first_attempt_share of at least 4 unicast "
       "exchanges acknowledged at the first attempt; an anchored relay whose upstream stays "
       "unheard lost_after_s backs towards the base until the link is good with hysteresis_db to "
@@ -204,7 +204,12 @@ void RelayChain::follow_link(RobotContext& robot, bool may_retreat) {
   }
   switch (motion_) {
     case Motion::advancing:
-      if (d >= goal_distance_m_ - kArrivedM || (now_s >= grace_s_ && link != LinkState::good)) {
+      // A weak link stops it at once; an unheard one only once lost_after_s has passed, since
+      // a few missed frames (a collision, a fade) empty the table of a neighbour that is there.
+      if (d >= goal_distance_m_ - kArrivedM ||
+          (now_s >= grace_s_ &&
+           (link == LinkState::weak ||
+            (link == LinkState::unheard && now_s - unheard_since_s_ >= lost_after_s_)))) {
         motion_ = Motion::anchored;
         robot.record("anchor_distance_m", d);
         robot.set_wheel_speeds(0.0, 0.0);

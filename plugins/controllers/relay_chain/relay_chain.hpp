@@ -7,7 +7,8 @@
 //               (relays + 1) * spacing_m; no radio information is used.
 //   link_aware  relays and leader leave together; each relay stops (anchors) where its radio's
 //               measurement of its upstream link (neighbors(): smoothed RSSI, first-attempt
-//               acknowledgement share) falls below the criteria, and backs towards the base
+//               acknowledgement share) falls below the criteria or stays unheard
+//               for lost_after_s, and backs towards the base
 //               while its upstream is unheard for lost_after_s; the leader goes on while its
 //               own upstream link is good (the last relay's, or the base's) and stops there.
 //

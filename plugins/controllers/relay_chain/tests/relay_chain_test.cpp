@@ -151,6 +151,20 @@ TEST_F(RelayChainTest, ALinkAwareRelayAnchorsWhereItsUpstreamGrowsWeak) {
   EXPECT_FALSE(robot.sampled.at("upstream_rssi_dbm").empty());
 }
 
+TEST_F(RelayChainTest, AnUnheardUpstreamStopsAnAdvancingRelayOnlyAfterLostAfter) {
+  make(2, {{"grace_s", 0.0}, {"lost_after_s", 2.0}});
+  robot.radio_neighbors = {heard(0, -60.0)};
+  run(2.0);
+  robot.radio_neighbors = {};  // a few missed frames
+  run(1.5);
+  EXPECT_EQ(robot.recorded.count("anchor_distance_m"), 0U);  // still going
+  robot.radio_neighbors = {heard(0, -60.0)};
+  run(1.0);
+  robot.radio_neighbors = {};
+  run(2.2);
+  ASSERT_EQ(robot.recorded.count("anchor_distance_m"), 1U);  // gone for good: it stops
+}
+
 TEST_F(RelayChainTest, AnAnchoredRelayWhoseUpstreamFallsSilentBacksOff) {
   make(3, {{"grace_s", 0.0}, {"lost_after_s", 2.0}});  // relay 2: upstream is robot 2
   robot.radio_neighbors = {heard(2, -70.0)};
