@@ -146,6 +146,23 @@ TEST(WirelessPropagation, ShadowingIsGaussianInDbAndBounded) {
   const auto static_map = make_model(loader, per_link);
   EXPECT_EQ(static_map->rx_power_dbm(0.0, link_at(10.0, 1)),
             static_map->rx_power_dbm(0.0, link_at(10.0, 2)));
+  // Per ordered pair: the two directions of a link draw apart, unless reciprocal.
+  EXPECT_NE(static_map->rx_power_dbm(0.0, link_at(10.0, 1, 3, 7)),
+            static_map->rx_power_dbm(0.0, link_at(10.0, 1, 7, 3)));
+  set_param(per_link, "reciprocal", true);
+  const auto reciprocal = make_model(loader, per_link);
+  int differing = 0;
+  for (NodeId a = 0; a < 20; ++a) {
+    for (NodeId b = a + 1; b < 20; ++b) {
+      EXPECT_EQ(reciprocal->rx_power_dbm(0.0, link_at(10.0, 1, a, b)),
+                reciprocal->rx_power_dbm(0.0, link_at(10.0, 5, b, a)));
+      if (reciprocal->rx_power_dbm(0.0, link_at(10.0, 1, a, b)) !=
+          reciprocal->rx_power_dbm(0.0, link_at(10.0, 1, a, b + 1 < 20 ? b + 1 : 0))) {
+        ++differing;
+      }
+    }
+  }
+  EXPECT_GT(differing, 150);  // still a map: pairs draw apart
 }
 
 TEST(WirelessPropagation, ChainAppliesModelsInOrderAndBoundsTheCutoff) {

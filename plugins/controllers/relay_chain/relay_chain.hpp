@@ -14,7 +14,7 @@
 //
 // Every robot keeps its own lane (the y it started at) and stops at goal_distance_m from where
 // it started. The leader sends the base a report every report_interval_s (unicast, with a send
-// report) and asks route_to(base) every step. Metrics (docs/communication-aware.md):
+// report) and asks route_to(base) every step. Metrics:
 //   leader: distance_m (each step; max = distance reached), route_to_base (1/0 per answered
 //   step; mean = share of time a route existed), connected_distance_m (distance at steps with a
 //   route; max = farthest connected), report_acknowledged (1/0 per send report), series

@@ -24,19 +24,29 @@ PluginInfo Shadowing::info() {
           real_param("sigma_db", 4.0, "dB", "standard deviation of the shadowing", 0.0, 100.0),
           bool_param("per_frame", true,
                      "draw per frame (true) or once per ordered transmitter-receiver pair"),
+          bool_param("reciprocal", false,
+                     "with per_frame false: one draw per unordered pair, so a link fades alike "
+                     "both ways (shadowing by the terrain between two robots is reciprocal)"),
       }};
 }
 
 Shadowing::Shadowing(const PluginArgs& args)
     : sigma_db_(args.params.real("sigma_db")),
       per_frame_(args.params.boolean("per_frame")),
+      reciprocal_(args.params.boolean("reciprocal")),
       seed_(args.seed) {}
 
 double Shadowing::rx_power_dbm(double input_dbm, const RadioLink& link) const {
   if (input_dbm <= kNoSignalDbm || sigma_db_ == 0.0) return input_dbm;
-  const std::uint64_t stream =
-      per_frame_ ? derive_seed(seed_, {link.transmitter, link.receiver, link.frame_uid})
-                 : derive_seed(seed_, {link.transmitter, link.receiver});
+  std::uint64_t stream = 0;
+  if (per_frame_) {
+    stream = derive_seed(seed_, {link.transmitter, link.receiver, link.frame_uid});
+  } else if (reciprocal_) {
+    stream = derive_seed(seed_, {std::min(link.transmitter, link.receiver),
+                                 std::max(link.transmitter, link.receiver)});
+  } else {
+    stream = derive_seed(seed_, {link.transmitter, link.receiver});
+  }
   RandomStream draw(stream);
   const double x = std::clamp(draw.normal(), -kBoundSigmas, kBoundSigmas);
   return input_dbm + sigma_db_ * x;

@@ -23,6 +23,7 @@ class Shadowing final : public Propagation {
  private:
   double sigma_db_;
   bool per_frame_;
+  bool reciprocal_;  // with !per_frame_: one draw per unordered pair
   std::uint64_t seed_;
 };
 
