@@ -11,6 +11,7 @@ namespace swarmnet::task_allocation {
 namespace {
 
 constexpr double kChargeToleranceFraction = 1e-9;
+constexpr std::uint64_t kBeaconOffsetStream = 0x42454143;  // "BEAC"
 
 std::uint16_t to_u16(std::uint32_t value) {
   return static_cast<std::uint16_t>(std::min<std::uint32_t>(value, UINT16_MAX));
@@ -88,9 +89,19 @@ PluginInfo TaskAllocation::info() {
       "Motion: go-to-point at max_speed_mps(), turning in place beyond 45 degrees of heading "
       "error, proportional steering otherwise; proximity below 0.5 m within 60 degrees of the "
       "heading makes it turn away (backing off below 0.25 m) and then drive 1 m straight.\n"
+      "Communication awareness (off by default; the paper's controller has none): with "
+      "beacon_interval_s > 0 every robot sends a one-hop beacon (one byte 'B', hop limit 1, "
+      "first at a random offset within the interval, drawn from a stream of its own) so that "
+      "robots with nothing to announce are heard; with reannounce_on_encounter (needs "
+      "network.neighbors.enabled) a robot waiting by an event whose service has not started "
+      "broadcasts S for it again, flooded, when its radio's neighbour table holds a robot the "
+      "previous step's did not (it met someone who may not have heard), at most once per "
+      "reannounce_min_interval_s.\n"
       "Metrics: sent.S .. sent.A and received.S .. received.A (one observation per message), "
       "decisions (one per run of the rule: 1 when its choice changed, else 0), abandoned, "
-      "charges, malformed_messages. Random draws come from the robot's own stream; reset() "
+      "charges, malformed_messages, beacons, reannounced (S sent again on an encounter). Beacons "
+      "received are not messages: they are neither counted nor malformed. Random draws come from "
+      "the robot's own stream; reset() "
       "restores the state right after init().",
       {real_param("other_event_probability", 0.1, "",
                   "with no under-served event, probability to pick another known event with the "
@@ -109,7 +120,15 @@ PluginInfo TaskAllocation::info() {
        real_param("explore_scale_m", 150.0, "m",
                   "distance scale of the exploration target draw, weight exp(-d / scale)", 1e-3),
        real_param("charge_until", 1.0, "",
-                  "battery fraction at which a charging robot leaves the charger", 0.0, 1.0)}};
+                  "battery fraction at which a charging robot leaves the charger", 0.0, 1.0),
+       real_param("beacon_interval_s", 0.0, "s",
+                  "time between one-hop beacons; 0: none (the paper's controller)", 0.0),
+       bool_param("reannounce_on_encounter", false,
+                  "a robot waiting by an event that needs robots floods S again when it hears a "
+                  "robot it did not hear at the previous step (needs network.neighbors.enabled, "
+                  "and beacons for robots that are otherwise silent)"),
+       real_param("reannounce_min_interval_s", 5.0, "s",
+                  "least time between two such re-announcements by one robot", 0.0)}};
 }
 
 TaskAllocation::TaskAllocation(const PluginArgs& args)
@@ -118,8 +137,17 @@ TaskAllocation::TaskAllocation(const PluginArgs& args)
       arrive_radius_m_(args.params.real("arrive_radius_m")),
       explore_cell_m_(args.params.real("explore_cell_m")),
       explore_scale_m_(args.params.real("explore_scale_m")),
-      charge_until_(args.params.real("charge_until")) {
+      charge_until_(args.params.real("charge_until")),
+      beacon_interval_(from_seconds(args.params.real("beacon_interval_s"))),
+      reannounce_(args.params.boolean("reannounce_on_encounter")),
+      reannounce_min_interval_(from_seconds(args.params.real("reannounce_min_interval_s"))) {
   state_.random = RandomStream(args.seed);
+  if (beacon_interval_ > SimTime::zero()) {
+    // Robots that all beaconed at the same instants would collide; a stream of its own leaves
+    // the decision rule's draws as the paper's controller makes them.
+    RandomStream offsets(derive_seed(args.seed, {kBeaconOffsetStream}));
+    state_.next_beacon = from_seconds(offsets.uniform(0.0, to_seconds(beacon_interval_)));
+  }
   initial_ = state_;
 }
 
@@ -213,6 +241,8 @@ void TaskAllocation::control_step(RobotContext& robot) {
       step_charging(robot, battery);
       break;
   }
+  if (beacon_interval_ > SimTime::zero()) send_beacon(robot);
+  if (reannounce_) reannounce_on_encounter(robot);
   robot.show_state(mode_name(state_.mode));
 }
 
@@ -220,6 +250,7 @@ bool TaskAllocation::receive(RobotContext& robot) {
   bool changed = false;
   for (const ReceivedMessage& received : robot.inbox()) {
     if (received.source == robot.id()) continue;  // an echo of its own broadcast
+    if (is_beacon(received.payload)) continue;    // heard, and so in the neighbour table
     const std::optional<TaskMessage> message = decode(received.payload);
     if (!message) {
       robot.record("malformed_messages", 1.0);
@@ -409,6 +440,27 @@ void TaskAllocation::abandon(RobotContext& robot, const std::optional<JoinStatus
   state_.shunned_until[id] = robot.now() + abandon_after_;
   state_.mode = Mode::exploring;
   decide(robot);
+}
+
+void TaskAllocation::send_beacon(RobotContext& robot) {
+  if (robot.now() < state_.next_beacon) return;
+  state_.next_beacon += beacon_interval_;
+  (void)robot.send(kBroadcast, encode_beacon(), SendOptions{1, false});
+  robot.record("beacons", 1.0);
+}
+
+void TaskAllocation::reannounce_on_encounter(RobotContext& robot) {
+  // Every step, so that the table compared with is the previous step's whatever the mode.
+  const bool met = state_.encounters.met_someone(robot.neighbors());
+  if (!met || state_.mode != Mode::waiting || state_.service_started ||
+      robot.now() < state_.next_reannounce) {
+    return;
+  }
+  const KnownEvent* known = state_.memory.find(state_.event);
+  if (known == nullptr || known->handled) return;
+  broadcast(robot, MessageType::status, state_.event);
+  robot.record("reannounced", 1.0);
+  state_.next_reannounce = robot.now() + reannounce_min_interval_;
 }
 
 void TaskAllocation::step_to_charger(RobotContext& robot) {

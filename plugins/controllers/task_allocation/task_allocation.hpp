@@ -26,6 +26,7 @@
 #include <optional>
 #include <vector>
 
+#include "encounter_watch.hpp"
 #include "event_memory.hpp"
 #include "explorer.hpp"
 #include "steering.hpp"
@@ -68,6 +69,9 @@ class TaskAllocation final : public Controller {
     std::map<std::uint32_t, SimTime> shunned_until;  // abandoned events
     Explorer explorer;
     Steering steering;
+    EncounterWatch encounters;  // reannounce_on_encounter
+    SimTime next_beacon{};      // beacon_interval_s > 0
+    SimTime next_reannounce{};  // reannounce_on_encounter: not before
   };
 
   bool receive(RobotContext& robot);
@@ -86,6 +90,9 @@ class TaskAllocation final : public Controller {
   void step_to_charger(RobotContext& robot);
   void step_charging(RobotContext& robot, const Battery& battery);
   void abandon(RobotContext& robot, const std::optional<JoinStatus>& joined);
+  // The communication-aware additions, both off by default.
+  void send_beacon(RobotContext& robot);
+  void reannounce_on_encounter(RobotContext& robot);
   void broadcast(RobotContext& robot, MessageType type, std::uint32_t id,
                  std::uint32_t waiting) const;
   void broadcast(RobotContext& robot, MessageType type, std::uint32_t id) const;
@@ -97,6 +104,9 @@ class TaskAllocation final : public Controller {
   double explore_cell_m_;
   double explore_scale_m_;
   double charge_until_;
+  SimTime beacon_interval_;  // zero: no beacons
+  bool reannounce_;
+  SimTime reannounce_min_interval_;
   std::vector<std::uint32_t> skills_;  // read every step
   State state_;
   State initial_;

@@ -109,4 +109,12 @@ std::optional<TaskMessage> decode(std::span<const std::byte> payload) {
   return m;
 }
 
+constexpr std::byte kBeaconByte{'B'};
+
+std::vector<std::byte> encode_beacon() { return {kBeaconByte}; }
+
+bool is_beacon(std::span<const std::byte> payload) {
+  return payload.size() == 1 && payload[0] == kBeaconByte;
+}
+
 }  // namespace swarmnet::task_allocation

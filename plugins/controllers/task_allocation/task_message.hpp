@@ -18,6 +18,10 @@
 //
 // All integers and doubles little-endian, whatever the host. decode() refuses (returns nothing
 // for) a payload of another size, an unknown type byte or a coordinate that is not finite.
+//
+// Not one of the paper's messages: with beacon_interval_s set, robots also send a one-hop
+// beacon, the single byte 'B', so that their neighbours' radios hear robots that have nothing
+// to announce (the encounter re-announcement, task_allocation.cpp).
 #pragma once
 
 #include <cstddef>
@@ -58,5 +62,8 @@ inline constexpr std::size_t kTaskMessageBytes = 43;
 
 [[nodiscard]] std::vector<std::byte> encode(const TaskMessage& message);
 [[nodiscard]] std::optional<TaskMessage> decode(std::span<const std::byte> payload);
+
+[[nodiscard]] std::vector<std::byte> encode_beacon();
+[[nodiscard]] bool is_beacon(std::span<const std::byte> payload);
 
 }  // namespace swarmnet::task_allocation

@@ -435,5 +435,100 @@ TEST_F(TaskAllocationTest, ResetReproducesARunByteForByte) {
   EXPECT_EQ(first, second);
 }
 
+TEST_F(TaskAllocationTest, WithoutCommunicationAwarenessItNeitherBeaconsNorReadsNeighbours) {
+  make();
+  robot.neighbors_enabled = false;  // neighbors() would throw if asked
+  for (int i = 0; i < 30; ++i) step();
+  EXPECT_TRUE(robot.sent.empty());
+  EXPECT_EQ(count("beacons"), 0U);
+}
+
+TEST_F(TaskAllocationTest, BeaconsGoOneHopOncePerIntervalAndAreNotMessagesToTheReceiver) {
+  make({{"beacon_interval_s", 1.0}});
+  for (int i = 0; i < 35; ++i) step();  // 3.5 s: three or four beacons, by the random offset
+  ASSERT_GE(robot.sent.size(), 3U);
+  ASSERT_LE(robot.sent.size(), 4U);
+  for (const auto& sent : robot.sent) {
+    EXPECT_EQ(sent.destination, kBroadcast);
+    EXPECT_TRUE(is_beacon(sent.payload));
+    EXPECT_EQ(sent.options.hop_limit, 1U);
+  }
+  for (std::size_t i = 1; i < robot.sent.size(); ++i) {
+    EXPECT_EQ(robot.sent[i].at - robot.sent[i - 1].at, from_seconds(1.0));
+  }
+  EXPECT_EQ(count("beacons"), robot.sent.size());
+  ReceivedMessage beacon;
+  beacon.source = 9;
+  beacon.destination = kBroadcast;
+  beacon.payload = encode_beacon();
+  robot.received.push_back(beacon);
+  step();
+  EXPECT_EQ(count("malformed_messages"), 0U);
+}
+
+TEST_F(TaskAllocationTest, BeaconOffsetsDifferBetweenRobotsAndRepeatPerSeed) {
+  const auto first_beacon = [this](std::uint64_t seed) {
+    robot = FakeRobotContext{};
+    SetUp();
+    make({{"beacon_interval_s", 1.0}}, seed);
+    while (robot.sent.empty()) step();
+    return robot.sent.front().at;
+  };
+  const SimTime a = first_beacon(1);
+  EXPECT_EQ(first_beacon(1), a);
+  bool differs = false;
+  for (std::uint64_t seed = 2; seed < 6; ++seed) differs = differs || first_beacon(seed) != a;
+  EXPECT_TRUE(differs);
+}
+
+TEST_F(TaskAllocationTest, AWaitingRobotRefloodsStatusWhenItMeetsSomeone) {
+  make({{"reannounce_on_encounter", true},
+        {"reannounce_min_interval_s", 5.0},
+        {"other_event_probability", 0.0}});
+  arrive_at(3, Vec2(140.0, 100.0), 4.0, 0.0);
+  const std::size_t before = robot.sent.size();
+  step();  // nobody heard yet
+  EXPECT_EQ(robot.sent.size(), before);
+  RadioNeighbor met;
+  met.id = 8;
+  robot.radio_neighbors = {met};
+  step();  // robot 8 heard: S again, flooded (no hop limit)
+  ASSERT_EQ(types(before), "S");
+  EXPECT_EQ(sent(before)[0].event_id, 3U);
+  EXPECT_EQ(sent(before)[0].waiting, 1U);
+  EXPECT_EQ(robot.sent.back().options.hop_limit, 0U);
+  EXPECT_EQ(count("reannounced"), 1U);
+  step();  // still robot 8: no encounter
+  RadioNeighbor other;
+  other.id = 11;
+  robot.radio_neighbors = {met, other};
+  step();  // robot 11 is new, but within reannounce_min_interval_s of the last
+  EXPECT_EQ(types(before), "S");
+  for (int i = 0; i < 50; ++i) step();
+  robot.radio_neighbors = {met};
+  step();
+  robot.radio_neighbors = {met, other};
+  step();  // 5 s on, 11 heard again: S again
+  EXPECT_EQ(types(before), "SS");
+}
+
+TEST_F(TaskAllocationTest, EncountersDoNotReannounceAServiceThatStartedOrARobotThatExplores) {
+  make({{"reannounce_on_encounter", true}, {"other_event_probability", 0.0}});
+  RadioNeighbor met;
+  met.id = 8;
+  robot.radio_neighbors = {met};
+  step();  // exploring, meets 8: nothing to say
+  EXPECT_TRUE(robot.sent.empty());
+  robot.radio_neighbors.clear();
+  arrive_at(3, Vec2(140.0, 100.0), 4.0, 3.0);  // completes the group: H, service starts
+  robot.readings["joined"] = {3.0, 4.0, 1.0};
+  step();
+  const std::size_t before = robot.sent.size();
+  robot.radio_neighbors = {met};
+  step();
+  EXPECT_EQ(robot.sent.size(), before);
+  EXPECT_EQ(count("reannounced"), 0U);
+}
+
 }  // namespace
 }  // namespace swarmnet::task_allocation
