@@ -221,8 +221,9 @@ void RelayChain::follow_link(RobotContext& robot, bool may_retreat) {
       robot.set_wheel_speeds(0.0, 0.0);
       if (!may_retreat && link == LinkState::good && d < goal_distance_m_ - kArrivedM) {
         motion_ = Motion::advancing;  // the leader goes on once its link is good again
-      } else if (may_retreat && link == LinkState::unheard &&
+      } else if (may_retreat && link == LinkState::unheard && d > kArrivedM &&
                  now_s - unheard_since_s_ >= lost_after_s_) {
+        // At the base there is nowhere further back to go: it waits there.
         motion_ = Motion::retreating;
         robot.record("retreats", 1.0);
       }

@@ -186,6 +186,19 @@ TEST_F(RelayChainTest, AnAnchoredRelayWhoseUpstreamFallsSilentBacksOff) {
   EXPECT_EQ(robot.recorded.at("anchor_distance_m").size(), 2U);
 }
 
+TEST_F(RelayChainTest, ARelayBackAtTheBaseWaitsThereInsteadOfRetreatingAgain) {
+  make(3, {{"grace_s", 0.0}, {"lost_after_s", 1.0}});
+  robot.radio_neighbors = {heard(2, -70.0)};
+  run(3.0);
+  robot.radio_neighbors = {heard(2, -90.0)};
+  run(0.2);
+  robot.radio_neighbors = {};  // its upstream gone for good: back to where it started
+  run(20.0);
+  EXPECT_NEAR(travelled(), 0.0, kArrivedM + 0.2);
+  EXPECT_EQ(robot.recorded.at("retreats").size(), 1U);
+  EXPECT_EQ(robot.recorded.at("anchor_distance_m").size(), 2U);
+}
+
 TEST_F(RelayChainTest, TheLeaderReportsAsksItsRouteAndWaitsForItsLink) {
   make(1, {{"grace_s", 0.0}});  // upstream: the last relay, robot 3
   robot.radio_neighbors = {heard(3, -70.0)};
