@@ -102,7 +102,7 @@ grep -Eq -- "-I$src/(core|transport|plugins|apps|tests)" "$tmp/example/compile_c
   fail "the example saw the source tree's headers"
 grep -q -- "$prefix/include" "$tmp/example/compile_commands.json" ||
   fail "the example did not use the installed headers"
-for plugin in gossip follow_the_leader; do
+for plugin in gossip follow_the_leader tether; do
   [[ -f $tmp/example/plugins/swarmnet_$plugin.so ]] || fail "swarmnet_$plugin.so not built"
 done
 [[ -f $prefix/include/swarmnet/testing.hpp ]] || fail "the SDK test kit is not installed"
@@ -111,8 +111,10 @@ step "the example's plugins pass their own tests (SDK test kit, installed header
 ctest --test-dir "$tmp/example" --output-on-failure >"$tmp/ctest.log" 2>&1 ||
   { cat "$tmp/ctest.log" >&2; fail "the example's plugin tests"; }
 grep -q "tests passed" "$tmp/ctest.log" || { cat "$tmp/ctest.log" >&2; fail "no plugin test ran"; }
-grep -Eq "Test +#[0-9]+: (Gossip|FollowTheLeader)" "$tmp/ctest.log" ||
-  { cat "$tmp/ctest.log" >&2; fail "the gossip and follow_the_leader tests were not registered"; }
+for suite in Gossip FollowTheLeader Tether; do
+  grep -Eq "Test +#[0-9]+: $suite" "$tmp/ctest.log" ||
+    { cat "$tmp/ctest.log" >&2; fail "the $suite tests were not registered"; }
+done
 
 step "the installed swarmnet lists the example's plugins"
 # The installed plugins are found from the installed command itself (prefix/lib/swarmnet/plugins).
@@ -175,5 +177,24 @@ median = statistics.median(final)
 assert median <= follow_distance_m + 1.0, f"median final distance to the leader {median:.1f} m"
 print(f"followers moved {min(moved):.1f} to {max(moved):.1f} m and ended {min(final):.1f} to "
       f"{max(final):.1f} m (median {median:.1f} m) from the leader")
+PY
+step "tether: robots spread and stop while their radios and routes still reach the anchor"
+"$prefix/bin/swarmnet" run "$src/examples/out_of_tree/tether.yaml" --out "$tmp/tether" \
+  >"$tmp/tether.out" 2>&1 || { cat "$tmp/tether.out" >&2; fail "swarmnet run tether.yaml"; }
+python3 - "$tmp/tether/summary.json" <<'PY'
+import json, sys
+summary = json.load(open(sys.argv[1]))
+c = summary["controllers"]
+robots = summary["robots"]
+# Every robot but the anchor stopped (measured with seed 1: all 15, 86 to 219 m out), having
+# spread beyond the 40 m start square, and held a route to the anchor nearly all the time
+# (measured 0.99); check-ins were acknowledged by a first hop (send reports).
+assert c["stopped_at_m"]["count"] == robots - 1, f"stopped: {c['stopped_at_m']}"
+assert c["stopped_at_m"]["min"] > 40.0, f"stopped_at_m: {c['stopped_at_m']}"
+assert c["route_to_anchor"]["mean"] >= 0.9, f"route_to_anchor: {c['route_to_anchor']}"
+assert c["check_ins_acknowledged"]["count"] > 0, "no check-in was acknowledged"
+print(f"tether: {c['stopped_at_m']['count']} robots stopped {c['stopped_at_m']['min']:.0f} to "
+      f"{c['stopped_at_m']['max']:.0f} m out; route to the anchor "
+      f"{c['route_to_anchor']['mean']:.3f} of the time")
 PY
 step "ok"
