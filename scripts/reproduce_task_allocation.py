@@ -40,6 +40,7 @@ import textwrap
 from collections import defaultdict
 
 from figure_python import require_matplotlib
+from swarmnet_stats import grouped_stats
 
 MODELS = ["all", "p50", "p75", "p100", "80211a", "ns3"]  # the sweep's order; others appended
 MESSAGE_TYPES = ["S", "G", "C", "H", "A"]           # the study's five messages; others appended
@@ -145,27 +146,16 @@ def write_runs_csv(runs, types, path):
 
 
 def swarmnet_stats(binary, runs_csv, metrics):
-    """`swarmnet stats --json` by (robots, events, model), models compared within each cell."""
-    command = [str(binary), "stats", str(runs_csv), "--by", "robots,events,model",
-               "--within", "model", "--holm", "--json"]
-    for m in metrics:
-        command += ["--metric", m]
-    done = subprocess.run(command, capture_output=True, text=True)
-    if done.returncode != 0:
-        sys.exit(f"{' '.join(command)} exited {done.returncode}: {done.stderr.strip()}")
-    result = json.loads(done.stdout)
+    """`swarmnet stats --json` by (robots, events, model), models compared within each cell;
+    groups keyed by (robots, events, model) with the counts as integers."""
+    def cell(key):
+        return (int(key[0]), int(key[1]), key[2])
     out = {}
-    for metric in metrics:
-        groups = {}
-        by_label = {}
-        for g in result["metrics"][metric]["groups"]:
-            key = (int(g["group"]["robots"]), int(g["group"]["events"]), g["group"]["model"])
-            groups[key] = g
-            by_label[g["label"]] = key
-        tests = []
-        for t in result["metrics"][metric]["welch"]:
-            tests.append(dict(t, a=by_label[t["a"]], b=by_label[t["b"]]))
-        out[metric] = {"groups": groups, "welch": tests}
+    for metric, result in grouped_stats(binary, runs_csv, ["robots", "events", "model"], "model",
+                                        metrics).items():
+        out[metric] = {"groups": {cell(k): g for k, g in result["groups"].items()},
+                       "welch": [dict(t, a=cell(t["a"]), b=cell(t["b"]))
+                                 for t in result["welch"]]}
     return out
 
 
