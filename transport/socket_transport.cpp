@@ -38,16 +38,26 @@ SocketTransport::~SocketTransport() {
 }
 
 IoStatus SocketTransport::wait_for(short events) {
-  // The same policy as the ring's (wait_policy.hpp): poll without sleeping for the spin time,
-  // yield a few times, then sleep in poll() in slices. A peer that answers within microseconds
-  // then finds this side awake and its send() wakes nobody, as with the ring.
+  // The same policy as the ring's (wait_policy.hpp): poll without sleeping while a spin pays
+  // (wait_pace.hpp), yield a few times, then sleep in poll() in slices. A peer that answers
+  // within microseconds then finds this side awake and its send() wakes nobody, as with the ring.
   pollfd p{fd_, events, 0};
-  if (spin_then_yield(policy_, [&] { return ::poll(&p, 1, 0) > 0; })) return IoStatus::ok;
+  if (::poll(&p, 1, 0) > 0) return IoStatus::ok;
+  const auto start = std::chrono::steady_clock::now();
+  WaitPace& pace = events == POLLIN ? read_pace_ : write_pace_;
+  const auto answered = [&] {
+    pace.record(std::chrono::steady_clock::now() - start, policy_);
+    return IoStatus::ok;
+  };
+  if (spin_then_yield(pace.plan(policy_, spinning_can_pay(start)), start,
+                      [&] { return ::poll(&p, 1, 0) > 0; })) {
+    return answered();
+  }
   WaitDeadline deadline(policy_);
   const auto slice = std::chrono::duration_cast<std::chrono::milliseconds>(policy_.sleep_slice);
   for (;;) {
     const int ready = ::poll(&p, 1, static_cast<int>(std::max<std::int64_t>(1, slice.count())));
-    if (ready > 0) return IoStatus::ok;
+    if (ready > 0) return answered();
     if (ready < 0 && errno != EINTR) return IoStatus::closed;
     if (policy_.peer_alive && !policy_.peer_alive()) return IoStatus::peer_dead;
     // deadline_ (a handshake's) is a hard bound; the policy's yields to a peer that works.

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "transport.hpp"
+#include "wait_pace.hpp"
 #include "wait_policy.hpp"
 
 namespace swarmnet {
@@ -48,6 +49,8 @@ class SocketTransport final : public Transport {
 
   int fd_;
   WaitPolicy policy_;
+  WaitPace read_pace_;  // how quickly the peer lately answered waits to read, and to write
+  WaitPace write_pace_;
   std::string description_;
   // Both buffers only grow (their unused tails are never zero-filled again): out_[0, out_end_)
   // waits to be sent, in_[in_start_, in_end_) has been received and not yet shown.

@@ -213,15 +213,19 @@ IoStatus SpscRing::try_pop(std::vector<std::byte>& record) {
   return IoStatus::ok;
 }
 
+// The flag is taken, not only read: a batch shown in several slices, or a publish and a close,
+// wake a sleeping peer once, not once per publish, and the wake is one system call.
 void SpscRing::wake_consumer() {
-  if (header_->consumer_sleeping.load(std::memory_order_seq_cst) != 0) {
+  if (header_->consumer_sleeping.load(std::memory_order_seq_cst) != 0 &&
+      header_->consumer_sleeping.exchange(0, std::memory_order_seq_cst) != 0) {
     header_->data_event.fetch_add(1, std::memory_order_release);
     futex_wake_all(header_->data_event);
   }
 }
 
 void SpscRing::wake_producer() {
-  if (header_->producer_sleeping.load(std::memory_order_seq_cst) != 0) {
+  if (header_->producer_sleeping.load(std::memory_order_seq_cst) != 0 &&
+      header_->producer_sleeping.exchange(0, std::memory_order_seq_cst) != 0) {
     header_->space_event.fetch_add(1, std::memory_order_release);
     futex_wake_all(header_->space_event);
   }
@@ -229,19 +233,27 @@ void SpscRing::wake_producer() {
 
 namespace {
 
-// Retries `attempt` until it stops returning would_block: spins first, then sleeps on `event`
-// (announcing itself in `sleeping`) in slices, checking the deadline and the peer in between.
+// Retries `attempt` until it stops returning would_block: spins and yields as `pace` plans, then
+// sleeps on `event` (announcing itself in `sleeping`) in slices, checking the deadline and the
+// peer in between. A waker clears `sleeping` when it wakes this side.
 // `heavy`: the side that wakes this one may fence lightly (see publish()), so this one fences
 // heavily; that costs microseconds, once per sleep, after tens of microseconds of spinning.
 template <typename Attempt>
 IoStatus wait_for(Attempt&& attempt, std::atomic<std::uint32_t>& event,
-                  std::atomic<std::uint32_t>& sleeping, const WaitPolicy& policy, bool heavy) {
-  IoStatus status = IoStatus::would_block;
+                  std::atomic<std::uint32_t>& sleeping, const WaitPolicy& policy, WaitPace& pace,
+                  bool heavy) {
+  IoStatus status = attempt();
+  if (status != IoStatus::would_block) return status;
+  const auto start = std::chrono::steady_clock::now();
   const auto done = [&] {
     status = attempt();
     return status != IoStatus::would_block;
   };
-  if (spin_then_yield(policy, done)) return status;
+  const auto answered = [&] {
+    pace.record(std::chrono::steady_clock::now() - start, policy);
+    return status;
+  };
+  if (spin_then_yield(pace.plan(policy, spinning_can_pay(start)), start, done)) return answered();
   WaitDeadline deadline(policy);
   for (;;) {
     const std::uint32_t seen = event.load(std::memory_order_acquire);
@@ -256,9 +268,9 @@ IoStatus wait_for(Attempt&& attempt, std::atomic<std::uint32_t>& event,
     status = attempt();
     if (status == IoStatus::would_block) futex_wait(event, seen, policy.sleep_slice);
     sleeping.store(0, std::memory_order_relaxed);
-    if (status != IoStatus::would_block) return status;
+    if (status != IoStatus::would_block) return answered();
     status = attempt();
-    if (status != IoStatus::would_block) return status;
+    if (status != IoStatus::would_block) return answered();
     if (policy.peer_alive && !policy.peer_alive()) return IoStatus::peer_dead;
     if (deadline.passed(std::chrono::steady_clock::now())) return IoStatus::timeout;
   }
@@ -273,7 +285,7 @@ IoStatus SpscRing::reserve(std::size_t bytes, std::span<std::byte>& space,
   publish();  // the consumer can only make room by reading what is staged
   // The consumer gives space back with a full fence (once per release slice): no heavy fence.
   return wait_for([&] { return try_reserve(bytes, space); }, header_->space_event,
-                  header_->producer_sleeping, policy, false);
+                  header_->producer_sleeping, policy, space_pace_, false);
 }
 
 IoStatus SpscRing::write(std::span<const std::byte> record, const WaitPolicy& policy) {
@@ -291,12 +303,12 @@ IoStatus SpscRing::push(std::span<const std::byte> record, const WaitPolicy& pol
 
 IoStatus SpscRing::read(std::span<const std::byte>& record, const WaitPolicy& policy) {
   return wait_for([&] { return try_read(record); }, header_->data_event, header_->consumer_sleeping,
-                  policy, asymmetric_fences_);
+                  policy, data_pace_, asymmetric_fences_);
 }
 
 IoStatus SpscRing::pop(std::vector<std::byte>& record, const WaitPolicy& policy) {
   return wait_for([&] { return try_pop(record); }, header_->data_event, header_->consumer_sleeping,
-                  policy, asymmetric_fences_);
+                  policy, data_pace_, asymmetric_fences_);
 }
 
 void SpscRing::close_producer() {

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "ring_status.hpp"
+#include "wait_pace.hpp"
 #include "wait_policy.hpp"
 
 namespace swarmnet {
@@ -164,6 +165,10 @@ class SpscRing {
   std::uint64_t held_bytes_ = 0;      // footprint of the record handed out by read(), if any
   std::uint64_t published_tail_ = 0;  // last value stored to header_->tail
   bool announced_ = false;            // consumer_fences_heavily settled for this consumer
+  // How quickly the peer lately answered this end's waits for data (consumer) and for room
+  // (producer).
+  WaitPace data_pace_;
+  WaitPace space_pace_;
 };
 
 }  // namespace swarmnet

@@ -1,6 +1,7 @@
-// How a blocked ring or socket operation waits: spin briefly (cheap when the peer answers within
-// microseconds), yield the core a few times (on a busy 2-core machine the peer may need it),
-// then sleep on a futex or in poll() so that an idle half uses no CPU.
+// How a blocked ring or socket operation waits: spin briefly when the peer lately answered within
+// microseconds (wait_pace.hpp), yield the core a few times (on a busy 2-core machine, or one core
+// shared with the peer, the peer may need it), then sleep on a futex or in poll() so that an idle
+// half uses no CPU.
 #pragma once
 
 #include <sched.h>
@@ -17,6 +18,9 @@ struct WaitPolicy {
   // step (a step exchange of hundreds of robots takes microseconds), short enough to be
   // negligible against a step that takes milliseconds.
   std::chrono::nanoseconds spin_time = std::chrono::microseconds(50);
+  // The longest the peer may lately have taken to answer for a wait to spin at all (wait_pace.hpp):
+  // about what a sleep and a wake-up cost in CPU, so spinning never costs more than sleeping.
+  std::chrono::nanoseconds spin_worth = std::chrono::microseconds(10);
   std::uint32_t yield_iterations = 8;  // sched_yield() calls before sleeping
   std::chrono::nanoseconds sleep_slice = std::chrono::milliseconds(20);  // re-check interval
   std::chrono::nanoseconds timeout = std::chrono::seconds(60);           // give up: the peer hangs
@@ -64,23 +68,30 @@ class WaitDeadline {
 // A hint to the CPU that this thread is spinning (eases the sibling hyperthread).
 inline void cpu_relax() { __builtin_ia32_pause(); }
 
-// The first two stages of a wait under `policy`, shared by the ring and the socket transports:
-// polls `ready` (true once the wait is over) for the spin time, then yields the core
-// yield_iterations times, polling after each. Returns whether `ready` answered true; if not, the
-// caller sleeps in its own way (a futex, poll()). The clock only bounds the spinning.
+// How one wait spins and yields before it sleeps (WaitPace chooses it per wait).
+struct WaitPlan {
+  std::chrono::nanoseconds spin_time{0};
+  std::uint32_t yield_iterations = 0;
+};
+
+// The first two stages of a wait, shared by the ring and the socket transports: polls `ready`
+// (true once the wait is over) for the plan's spin time, then yields the core yield_iterations
+// times, polling after each. Returns whether `ready` answered true; if not, the caller sleeps in
+// its own way (a futex, poll()). The clock only bounds the spinning.
 template <typename Ready>
-bool spin_then_yield(const WaitPolicy& policy, Ready&& ready) {
+bool spin_then_yield(const WaitPlan& plan, std::chrono::steady_clock::time_point start,
+                     Ready&& ready) {
   if (ready()) return true;
-  const auto spin_until = std::chrono::steady_clock::now() + policy.spin_time;
-  for (std::uint32_t i = 1;; ++i) {
+  const auto spin_until = start + plan.spin_time;
+  for (std::uint32_t i = 1; plan.spin_time.count() > 0; ++i) {
     cpu_relax();
     if (ready()) return true;
     // The clock is read every 32 polls: a pause lasts only 10 to 140 cycles.
     if (i % 32 == 0 && std::chrono::steady_clock::now() >= spin_until) break;
   }
-  // On a machine with fewer free cores than runnable threads, spinning only delays the peer we
-  // wait for: give the core away a few times before sleeping.
-  for (std::uint32_t i = 0; i < policy.yield_iterations; ++i) {
+  // Where the peer shares this core, or more threads are runnable than there are cores, the peer
+  // may be waiting for this one: give the core away a few times before sleeping.
+  for (std::uint32_t i = 0; i < plan.yield_iterations; ++i) {
     sched_yield();
     if (ready()) return true;
   }

@@ -62,15 +62,17 @@ void open_run(NetworkRun& run, const NetworkSetup& setup) {
 }
 
 void serve(NetworkRun& run, const NetworkSetup& setup, StepChannel& channel) {
+  // The transport's CPU runs from before a result is sent to after the next batch arrived: two
+  // reads of the thread's CPU clock (a system call) a step instead of four.
   double transport_cpu = 0.0;
+  double transport_since = thread_cpu_seconds();
   NetworkEngine& simulator = *run.engine;
   StepBatch batch;
   StepResult result;
   for (;;) {
     bool finished = false;
-    const double before_receive = thread_cpu_seconds();
     const ProtocolResult received = channel.receive_batch(batch, finished);
-    transport_cpu += thread_cpu_seconds() - before_receive;
+    transport_cpu += thread_cpu_seconds() - transport_since;
     if (!received.ok()) throw RunError(received.error);
     if (finished) break;
     if (setup.stops_on_signal && stop_requested()) throw RunError(stopped_by_signal());
@@ -82,9 +84,8 @@ void serve(NetworkRun& run, const NetworkSetup& setup, StepChannel& channel) {
       throw RunError("ran out of memory in step " + std::to_string(batch.step) + " (" +
                      setup.memory_limit + ")");
     }
-    const double before_send = thread_cpu_seconds();
+    transport_since = thread_cpu_seconds();
     const ProtocolResult sent = channel.send_result(result);
-    transport_cpu += thread_cpu_seconds() - before_send;
     if (!sent.ok()) throw RunError(sent.error);
   }
   simulator.finish();

@@ -1,8 +1,10 @@
 #include "coupling/network_link.hpp"
 
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <thread>
 
 #include "coupling/child_process.hpp"
@@ -77,6 +79,7 @@ class InprocLink final : public NetworkLink {
       : channel_(options.ring_bytes, robot_end_policy(options), network_end_policy(options)),
         network_channel_(channel_.network_end(), "the robot half") {
     thread_ = std::thread([this, &scenario, &loader, run_dir] {
+      network_tid_.store(static_cast<pid_t>(::syscall(SYS_gettid)));
       try {
         serve_network_connection(network_channel_, [&](const Hello&) {
           // The robot half's own validated scenario and loader: nothing is resolved twice.
@@ -98,6 +101,10 @@ class InprocLink final : public NetworkLink {
     return "in-process rings, " + mib(channel_.ring_bytes()) + " each way";
   }
   [[nodiscard]] pid_t local_network_pid() const override { return ::getpid(); }
+  // Set by the thread as it starts, long before the handshake it answers is over.
+  [[nodiscard]] ThreadId network_thread() const override {
+    return {::getpid(), network_tid_.load()};
+  }
   std::string finish() override {
     thread_.join();
     return error_;
@@ -125,6 +132,7 @@ class InprocLink final : public NetworkLink {
   InprocChannel channel_;
   StepChannel network_channel_;
   std::thread thread_;
+  std::atomic<pid_t> network_tid_{0};
   std::string error_;
 };
 
@@ -142,6 +150,8 @@ class ChildLink final : public NetworkLink {
     return description_ + ", network half pid " + std::to_string(child_->pid());
   }
   [[nodiscard]] pid_t local_network_pid() const override { return child_->pid(); }
+  // `swarmnet net` serves the run on its main thread.
+  [[nodiscard]] ThreadId network_thread() const override { return {child_->pid(), child_->pid()}; }
   void connected() override {
     if (segment_) segment_->remove_name();
   }
@@ -166,6 +176,7 @@ class RemoteLink final : public NetworkLink {
   Transport& transport() override { return *transport_; }
   [[nodiscard]] std::string describe() const override { return description_; }
   [[nodiscard]] pid_t local_network_pid() const override { return 0; }
+  [[nodiscard]] ThreadId network_thread() const override { return {}; }
   std::string finish() override { return ""; }
 
  private:

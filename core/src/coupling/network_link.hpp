@@ -16,6 +16,7 @@
 #include <string>
 #include <string_view>
 
+#include "coupling/core_pairing.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "scenario/scenario.hpp"
 #include "transport.hpp"
@@ -50,6 +51,9 @@ class NetworkLink {
   // them, finished under NAME.partial-PID, for this half to commit with the run's other outputs:
   // a child's pid, this process's for a thread; 0 for a remote one (it commits on its own host).
   [[nodiscard]] virtual pid_t local_network_pid() const = 0;
+  // The thread that runs a local network half, for keeping it beside the robot half
+  // (core_pairing.hpp); {0, 0} for a remote one.
+  [[nodiscard]] virtual ThreadId network_thread() const = 0;
   // The handshake succeeded: nothing more needs a name on the file system.
   virtual void connected() {}
   // After the robot half closed its end: waits a short while for the network half to stop (then

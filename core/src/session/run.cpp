@@ -11,6 +11,7 @@
 #include <thread>
 #include <utility>
 
+#include "coupling/core_pairing.hpp"
 #include "coupling/cpu_clock.hpp"
 #include "coupling/network_half.hpp"
 #include "coupling/network_link.hpp"
@@ -99,17 +100,29 @@ NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, Step
                                MobilityTraceWriter* mobility, PositionsTraceWriter* positions,
                                HeadingsTraceWriter* headings, ObjectTraceWriter* objects,
                                TrafficScheduleWriter* traffic, ProgressLine& progress, RunLog& log,
-                               RobotLoop& loop) {
+                               CorePairing* pairing, RobotLoop& loop) {
   const std::uint64_t steps = scenario.step_count();
   const std::uint64_t lag = delivery_lag(scenario.sync);
   StepBatch batch;
   StepResult result;
   std::vector<Delivery> no_deliveries;
 
+  // The transport's CPU runs from before a batch is sent to after the next result arrived: two
+  // clock reads a step instead of four (on a light run, reading the thread's CPU clock is a
+  // system call that costs as much as a hand-over). In between lies only the loop's bookkeeping.
+  double transport_since = -1.0;  // thread CPU when the open stretch began; < 0: none open
+  auto transport_begins = [&] {
+    if (transport_since < 0.0) transport_since = thread_cpu_seconds();
+  };
+  auto transport_ends = [&] {
+    if (transport_since < 0.0) return;
+    loop.transport_cpu_s += thread_cpu_seconds() - transport_since;
+    transport_since = -1.0;
+  };
   auto receive = [&](std::uint64_t expected_step) {
-    const double before = thread_cpu_seconds();
+    transport_begins();
     const ProtocolResult received = channel.receive_result(result);
-    loop.transport_cpu_s += thread_cpu_seconds() - before;
+    transport_ends();
     if (!received.ok()) throw PeerLost(received.error);
     if (result.step != expected_step) {
       throw PeerLost("protocol error: the network half answered step " +
@@ -143,18 +156,19 @@ NetworkReport drive_robot_half(const Scenario& scenario, RobotWorld& world, Step
     world.take_route_queries(batch.route_queries);
     if (traffic != nullptr) traffic->write(batch);
 
-    const double before = thread_cpu_seconds();
-    const ProtocolResult sent = channel.send_batch(batch);
-    loop.transport_cpu_s += thread_cpu_seconds() - before;
-    if (!sent.ok()) throw PeerLost(sent.error);
     progress.update(step + 1);
     log.progress(step + 1, steps, scenario.step_s);
+    transport_begins();
+    const ProtocolResult sent = channel.send_batch(batch);
+    if (!sent.ok()) throw PeerLost(sent.error);
     loop.steps = step + 1;
+    if (pairing != nullptr) pairing->tick(std::chrono::steady_clock::now());
     if (world.task_done()) break;
   }
   // Windows whose deliveries no robot step will read any more: still simulated and counted.
   const std::uint64_t ran = loop.steps;
   for (std::uint64_t step = ran > lag ? ran - lag : 0; step < ran; ++step) receive(step);
+  transport_ends();
   if (const ProtocolResult r = channel.send_finish(); !r.ok()) throw PeerLost(r.error);
   NetworkReport report;
   if (const ProtocolResult r = channel.receive_report(report); !r.ok()) throw PeerLost(r.error);
@@ -256,10 +270,14 @@ RunOutcome run_scenario(const Scenario& scenario, PluginLoader& loader, const Ru
       try {
         handshake(scenario, outcome.dir, channel);
         link->connected();
-        report = drive_robot_half(scenario, world, channel, mobility ? &*mobility : nullptr,
-                                  positions ? &*positions : nullptr,
-                                  headings ? &*headings : nullptr, objects ? &*objects : nullptr,
-                                  traffic ? &*traffic : nullptr, progress, log, loop);
+        // Strict halves take turns: one core serves both (core_pairing.hpp).
+        std::optional<CorePairing> pairing;
+        if (scenario.sync == SyncMode::strict) pairing.emplace(link->network_thread());
+        report =
+            drive_robot_half(scenario, world, channel, mobility ? &*mobility : nullptr,
+                             positions ? &*positions : nullptr, headings ? &*headings : nullptr,
+                             objects ? &*objects : nullptr, traffic ? &*traffic : nullptr, progress,
+                             log, pairing ? &*pairing : nullptr, loop);
       } catch (const PeerLost& error) {
         robot_error = error.what();
         lost_peer = true;
