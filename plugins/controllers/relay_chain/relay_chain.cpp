@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "lane_drive.hpp"
@@ -14,7 +15,12 @@ namespace {
 Mode parse_mode(const std::string& text) {
   if (text == "none") return Mode::none;
   if (text == "geometric") return Mode::geometric;
-  return Mode::link_aware;  // the parameter's choices admit nothing else
+  if (text == "link_aware") return Mode::link_aware;
+  // The parameter's choices admit nothing else; a new choice without a mode must not pass as
+  // link_aware.
+  throw std::invalid_argument("relay_chain: mode '" + text +
+                              "' is none of none, geometric, "
+                              "link_aware");
 }
 
 }  // namespace
